@@ -1,0 +1,257 @@
+// revolve: surfaces of revolution traced exactly inside Embree 3.
+//
+// A surface of revolution (SoR) is a profile polyline of points (r, z), swept a full turn about the
+// z axis. revolve builds a MIBIT search tree over the profile (Baciu, Jia & Lam 2001) and intersects
+// rays with the truncated cones of its segments (Wang 1989), either directly (`intersect`) or as an
+// Embree user geometry (`Geometry`) that Embree's own BVH places in a scene.
+//
+// Conventions
+// - Object space: the axis of revolution is the z axis; profile points have r >= 0.
+// - A ray is origin + t * direction; t is in units of `direction`, which need not be unit length.
+//   Queries answer the nearest hit with tnear <= t <= tfar.
+// - Normals point to the right of the profile's direction of travel in the (r, z) half-plane, i.e.
+//   outwards for a profile listed from bottom to top. They are not flipped towards the ray.
+// - u = phi / 2pi in [0, 1), phi = atan2(y, x) of the hit; v = arc length along the profile from its
+//   first point, normalised to [0, 1]; `segment` (Embree's primID) is the index of the profile
+//   segment hit (segment i joins points i and i + 1 of Profile::points()).
+// - Every query is thread-safe on a built Shape, never allocates, throws or locks.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace revolve {
+
+struct Point2 {
+  double r;  // distance from the z axis, >= 0
+  double z;  // height along the axis
+};
+
+struct Vec3 {
+  float x, y, z;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Profile: a validated generatrix.
+
+// Thrown for an invalid profile. what() names the point, the value and the rule it breaks.
+class ProfileError : public std::invalid_argument {
+ public:
+  enum class Rule { tooFewPoints, nonFinite, negativeRadius, selfIntersecting, tooManyPoints };
+  ProfileError(Rule rule, std::size_t index, const std::string& message)
+      : std::invalid_argument(message), rule_(rule), index_(index) {}
+  Rule rule() const noexcept { return rule_; }
+  // Index (in the caller's input) of the first point involved.
+  std::size_t index() const noexcept { return index_; }
+
+ private:
+  Rule rule_;
+  std::size_t index_;
+};
+
+struct ProfileWarning {
+  std::size_t index;  // index in the caller's input of the point concerned
+  std::string message;
+};
+
+class Profile {
+ public:
+  // Largest accepted point count: tree node indices are 32-bit and a tree has up to 2 nodes a point.
+  static constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
+
+  // Validates `points` and keeps them in order. Throws ProfileError for: fewer than 2 distinct
+  // points; a non-finite coordinate; r < 0; a self-intersecting polyline (two segments sharing a
+  // point other than the vertex joining neighbours, or the closing point of a loop); more than
+  // kMaxPoints points. Exactly repeated consecutive points are dropped and listed in warnings().
+  // Horizontal segments (discs, annuli), vertical ones (cylinders), points on the axis (apexes)
+  // and profiles that are not monotone in z are all valid.
+  explicit Profile(std::span<const Point2> points);
+
+  std::span<const Point2> points() const noexcept { return points_; }
+  std::size_t segmentCount() const noexcept { return points_.size() - 1; }
+  // Closed: the profile bounds a solid (its ends meet, or both lie on the axis).
+  bool closed() const noexcept { return closed_; }
+  // Cumulative arc length at each point; arcLength().back() is the total length.
+  std::span<const double> arcLength() const noexcept { return arcLength_; }
+  // Index in the caller's input of each kept point.
+  std::span<const std::size_t> sourceIndex() const noexcept { return sourceIndex_; }
+  const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
+
+ private:
+  std::vector<Point2> points_;
+  std::vector<double> arcLength_;
+  std::vector<std::size_t> sourceIndex_;
+  std::vector<ProfileWarning> warnings_;
+  bool closed_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Shape: a profile with its search structure, ready to trace.
+
+enum class Method {
+  mibit,   // the MIBIT tree: monotone intervals, uniform refinement, bounding shells, range search
+  linear,  // Wang's intersection with every segment in turn (the paper's linear baseline)
+  kajiya,  // Kajiya's strip tree (Ballard strips, conic-vs-strip tests)
+};
+
+enum class ShellKind {
+  cylinder,  // CY: annular cylinder shells r in [rmin, rmax], z in [zmin, zmax]
+  cone,      // TC: truncated-cone shells, a band parallel to the node's chord
+  hybrid,    // HY: per node the cheaper-to-test fit, by the paper's area / interval / factor-4 rule
+};
+
+struct BuildOptions {
+  Method method = Method::mibit;
+  ShellKind shell = ShellKind::hybrid;
+  // MR refinement: leaves per monotone interval, each an equal share of its segments, searched by
+  // Wang's intersection in turn. 0 refines down to one segment a leaf.
+  std::uint32_t subdivisions = 0;
+  bool monotoneSplit = true;  // false: refine the whole profile as one interval (paper's "no split")
+  bool rangeSearch = true;    // false: intersect every node's shell (paper's "no range search")
+};
+
+// Counters of work done, per query or accumulated; counting costs nothing when not asked for.
+struct Stats {
+  std::uint64_t rays = 0;
+  std::uint64_t nodesVisited = 0;  // tree nodes (MIBIT / strip tree) popped and examined
+  std::uint64_t shellTests = 0;    // bounding-shell or strip intersection tests
+  std::uint64_t quadratics = 0;    // ray / truncated-cone quadratics solved (Wang)
+  Stats& operator+=(const Stats& other) noexcept;
+};
+
+struct Bounds {
+  Vec3 lower, upper;
+};
+
+class Shape {
+ public:
+  explicit Shape(Profile profile, const BuildOptions& options = {});
+  ~Shape();
+  Shape(Shape&&) noexcept;
+  Shape& operator=(Shape&&) noexcept;
+
+  const Profile& profile() const noexcept;
+  const BuildOptions& options() const noexcept;
+  // Object-space box, padded so that Embree's single-precision box tests never cull a hit.
+  Bounds bounds() const noexcept;
+  std::size_t treeNodeCount() const noexcept;  // nodes of the search structure in use
+  std::size_t memoryBytes() const noexcept;    // heap bytes held by the shape
+
+  struct Impl;
+  const Impl& impl() const noexcept { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Queries without Embree.
+
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;  // need not be unit length; must be finite and non-zero
+  float tnear = 0.0f;
+  float tfar = std::numeric_limits<float>::infinity();
+};
+
+struct Hit {
+  float t;           // tnear <= t <= tfar
+  Vec3 point;        // hit point, computed in double precision from the exact solution
+  Vec3 normal;       // unit geometric normal (see Conventions)
+  float u, v;        // surface parameters (see Conventions)
+  std::uint32_t segment;
+};
+
+// Nearest hit of `ray` with the surface, or nothing. A ray with a non-finite or zero direction,
+// a non-finite origin, or tnear > tfar misses.
+std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
+// Whether any hit with tnear <= t <= tfar exists.
+bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
+
+struct SurfacePoint {
+  Vec3 point;     // closest point of the surface
+  float distance;
+  std::uint32_t segment;
+};
+// Exact closest point of the surface to p (the 2-D closest point in p's meridian plane).
+SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+// Secondary rays.
+
+// Origin for a ray leaving the hit at `t` of `ray` in direction `newDirection`: the point
+// origin + t * direction, moved along the normal to the side `newDirection` points to, by the
+// bound on that point's rounding error (as pbrt-v4's OffsetRayOrigin). A ray spawned from it with
+// tnear = 0 does not re-hit the surface it leaves, yet finds every other surface, including the
+// same surface elsewhere. `normal` need not be unit length (Embree's Ng may be passed as is).
+Vec3 offsetRayOrigin(const Ray& ray, float t, Vec3 normal, Vec3 newDirection) noexcept;
+
+// ---------------------------------------------------------------------------------------------
+// Embree.
+
+// An Embree user geometry that traces a Shape: bounds, intersect and occluded callbacks for
+// packets of 1, 4, 8 and 16 rays, filter functions, instancing and point queries. Create it,
+// attach handle() to a scene (rtcAttachGeometry), and keep both the Geometry and the Shape alive
+// while any scene holding the geometry is used. One Shape may back any number of Geometries, and
+// a scene holding a Geometry may be instanced any number of times (one instance level).
+class Geometry {
+ public:
+  struct Options {
+    bool countStats = false;  // accumulate Stats (slower); read them with stats()
+  };
+  Geometry(RTCDevice device, const Shape& shape, Options options);
+  Geometry(RTCDevice device, const Shape& shape) : Geometry(device, shape, Options{}) {}
+  ~Geometry();
+  Geometry(const Geometry&) = delete;
+  Geometry& operator=(const Geometry&) = delete;
+
+  RTCGeometry handle() const noexcept { return geometry_; }
+  const Shape& shape() const noexcept;
+
+  // Set Embree filter functions through these (not rtcSetGeometry*FilterFunction directly): the
+  // callbacks call rtcFilterIntersection / rtcFilterOcclusion only when a filter is set, here or
+  // in the intersect context. Pass nullptr to remove a filter. Commit the geometry afterwards.
+  void setIntersectFilter(RTCFilterFunctionN filter) noexcept;
+  void setOcclusionFilter(RTCFilterFunctionN filter) noexcept;
+
+  Stats stats() const noexcept;  // zero unless Options::countStats
+
+  struct Payload;
+
+ private:
+  RTCGeometry geometry_ = nullptr;
+  std::unique_ptr<Payload> payload_;
+};
+
+// Closest surface point over an Embree scene (rtcPointQuery), for SoR geometries and instances
+// of scenes holding them. `shapeOf` maps (instID, geomID) to the Geometry that was attached under
+// that geomID in the scene that instance instID shows (instID is RTC_INVALID_GEOMETRY_ID for
+// geometries attached to `scene` itself); return nullptr for geometries to skip.
+struct ScenePoint {
+  Vec3 point;     // world space
+  float distance;
+  unsigned geomID;
+  unsigned instID;  // RTC_INVALID_GEOMETRY_ID when not instanced
+  std::uint32_t segment;
+};
+using GeometryLookup = const Geometry* (*)(void* user, unsigned instID, unsigned geomID);
+std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup,
+                                       void* user);
+
+// A triangle mesh of the profile swept in `slices` steps (2 * segments * slices triangles, vertices
+// on the exact circles), committed and ready to attach: the tessellated baseline. Throws
+// std::invalid_argument when slices < 3 or the triangle count exceeds 32-bit indices.
+RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std::uint32_t slices);
+// Hausdorff distance between that mesh and the exact surface: r_max * (1 - cos(pi / slices)).
+double tessellationError(const Profile& profile, std::uint32_t slices);
+
+}  // namespace revolve

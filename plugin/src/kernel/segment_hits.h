@@ -1,0 +1,131 @@
+// Wang's intersection: a ray against one profile segment revolved, i.e. a truncated cone
+// r = r0 + (z - z0) (r1 - r0) / (z1 - z0), or an annulus when the segment is horizontal.
+//
+// Watertightness. A non-horizontal segment owns the slab between the horizontal planes of its end
+// points. Within it, the cone's implicit function
+//     g(s) = ez^2 rho(s)^2 - L(s)^2,  L(s) = r0 ez + (z(s) - z0) er   (= ez * radius of the cone at z(s))
+// is negative exactly where the ray is inside the cone, and because the cone's radius is >= 0 in
+// the slab, g's roots there are the real nappe's (the mirror nappe lies outside the slab). Whether
+// the ray is inside at a slab end that is a vertex plane is decided by one shared predicate,
+//     rho^2(plane) < r_vertex^2,
+// evaluated with the same expression by both segments meeting at that vertex (and by the annulus
+// of a horizontal segment, whose hit is the XOR of its two vertex predicates). So along the ray the
+// inside/outside state is handed from segment to segment without ever being computed twice, the
+// number of hits each segment reports has the parity its end signs dictate, and a ray leaving a
+// closed profile's solid must be reported hitting some segment: no leaks, by construction rather
+// than by tolerance. Root values are only clamped into their sign-bracketed intervals.
+//
+// Accuracy. The quadratic is expanded about the middle of the ray's stretch in the slab, so its
+// coefficients are of the size of the segment's neighbourhood (not of distances to the ray's
+// origin): a nearly horizontal segment keeps its roots well conditioned.
+#pragma once
+
+#include "kernel/bracketed_roots.h"
+#include "kernel/meridian_ray.h"
+
+#include <revolve/revolve.h>
+
+namespace revolve::detail {
+
+struct SegmentHits {
+  int count = 0;
+  double s[3];         // increasing
+  bool solved = false;  // whether a quadratic was set up (the ray met the segment's slab)
+};
+
+namespace segment_hits_internal {
+
+inline void insertSorted(SegmentHits& hits, double s) noexcept {
+  int i = hits.count++;
+  for (; i > 0 && hits.s[i - 1] > s; --i) hits.s[i] = hits.s[i - 1];
+  hits.s[i] = s;
+}
+
+// A ray through an apex (a vertex on the axis) touches the surface there even when it is outside
+// on both sides (a double root that rounding may turn either way). Count it as a hit when the
+// ray's line passes within lineSlack (its distance from the caller's float ray) plus the rounding
+// of this test (4 u R) of the apex point.
+inline void addApexTouch(const MeridianRay& ray, double zApex, double lo, double hi, SegmentHits& hits) noexcept {
+  const double ax = -ray.ox, ay = -ray.oy, az = zApex - ray.oz;  // apex - origin
+  // Placed on the apex's plane crossing, the very value the tree's slabs and the neighbouring
+  // segment use, so that every method sees the touch at the same s.
+  const double sApex = ray.inPlane ? ax * ray.dx + ay * ray.dy : ray.planeS(zApex);
+  if (!(sApex >= lo && sApex <= hi)) return;
+  const double cx = ay * ray.dz - az * ray.dy, cy = az * ray.dx - ax * ray.dz, cz = ax * ray.dy - ay * ray.dx;
+  const double tolerance = ray.lineSlack + 4.0 * kUnitRoundoff * (std::abs(ax) + std::abs(ay) + std::abs(az));
+  if (cx * cx + cy * cy + cz * cz <= tolerance * tolerance) insertSorted(hits, sApex);
+}
+
+// Inside (rho < cone radius) at s, for an interval end that is not a vertex plane: the ray's origin
+// or its exit from the bounding sphere. Evaluated as the sign of ez * (rho - radius), whose error
+// stays proportional to the segment's length however flat the segment is.
+inline bool insideConeAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez) noexcept {
+  const double rho = std::sqrt(ray.rho2At(s));
+  const double L = p0.r * ez + (ray.zAt(s) - p0.z) * er;
+  return ez > 0.0 ? ez * rho < L : ez * rho > L;
+}
+
+}  // namespace segment_hits_internal
+
+// All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order.
+inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, double lo, double hi) noexcept {
+  using namespace segment_hits_internal;
+  SegmentHits hits;
+  if (p0.r == 0.0 && p1.r == 0.0) return hits;  // a segment on the axis sweeps no area
+  const double er = p1.r - p0.r, ez = p1.z - p0.z;
+
+  if (!ray.inPlane) {
+    const double s0 = ray.planeS(p0.z);
+    if (ez == 0.0) {
+      // Annulus (or disc): hit where the ray crosses its plane between the two vertex circles.
+      if (s0 >= lo && s0 <= hi) {
+        const double rho2 = ray.rho2At(s0);
+        if ((rho2 < p0.r * p0.r) != (rho2 < p1.r * p1.r)) hits.s[hits.count++] = s0;
+      }
+      return hits;
+    }
+    const double s1 = ray.planeS(p1.z);
+    const bool p0First = s0 <= s1;
+    const double sEnter = p0First ? s0 : s1, sLeave = p0First ? s1 : s0;
+    const double rEnter = p0First ? p0.r : p1.r, rLeave = p0First ? p1.r : p0.r;
+    const double x0 = std::max(sEnter, lo), x1 = std::min(sLeave, hi);
+    if (x0 <= x1) {
+      const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : insideConeAt(ray, x0, p0, er, ez);
+      const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : insideConeAt(ray, x1, p0, er, ez);
+      // Expand g about the middle m of [x0, x1]: g(m + x) = A x^2 + 2 B x + C.
+      const double m = 0.5 * (x0 + x1);
+      const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
+      const double bm = px * ray.dx + py * ray.dy;
+      const double cm = px * px + py * py;
+      const double Lm = p0.r * ez + (ray.zAt(m) - p0.z) * er;
+      const double ez2 = ez * ez;
+      const Quadratic g{ez2 * ray.a - er * er * ray.dz * ray.dz, ez2 * bm - er * ray.dz * Lm, ez2 * cm - Lm * Lm};
+      const Roots roots = bracketedRoots(g, x0 - m, x1 - m, inside0, inside1);
+      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = m + roots.x[i];
+      hits.solved = true;
+    }
+  } else {
+    // The ray stays in the plane z = oz, where the cone is a circle. A segment owns the heights
+    // [zmin, zmax) — half-open, so that a vertex height belongs to exactly the segments that
+    // continue upwards from it, and the circles seen at any height are the true cross-section.
+    const double zMin = std::min(p0.z, p1.z), zMax = std::max(p0.z, p1.z);
+    if (ez != 0.0 && zMin <= ray.oz && ray.oz < zMax) {
+      const double radius = ray.oz == p0.z ? p0.r : ray.oz == p1.z ? p1.r : p0.r + (ray.oz - p0.z) * (er / ez);
+      const double R2 = radius * radius;
+      // a * (rho^2 - radius^2) about the closest approach to the axis: a^2 x^2 + cross^2 - a radius^2.
+      const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
+      const Roots roots =
+          bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) < R2);
+      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = ray.sAxis + roots.x[i];
+      hits.solved = true;
+    }
+  }
+
+  if (ez != 0.0) {
+    if (p0.r == 0.0) addApexTouch(ray, p0.z, lo, hi, hits);
+    if (p1.r == 0.0) addApexTouch(ray, p1.z, lo, hi, hits);
+  }
+  return hits;
+}
+
+}  // namespace revolve::detail

@@ -1,0 +1,100 @@
+// Building a Shape: the local frame, the bounding sphere and box, and the search structures.
+#include "shape_impl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace revolve {
+namespace {
+
+// Embree tests user geometry against its box in single precision without the robust variant; the
+// error is about 1-2 float ulps of the ray's coordinates (measured in notes-embree-research). A
+// surface that touches its box (a cap on the top face, the widest circle on the side faces) would
+// lose hits there. Padding by 2^-18 of the box's largest coordinate covers rays whose origin and
+// hit coordinates are within 2^5 times that magnitude (2 ulps of 2^5 M = 2^-18 M).
+Bounds paddedBounds(double rMax, double zMin, double zMax) {
+  const double magnitude = std::max({rMax, std::abs(zMin), std::abs(zMax)});
+  const double pad = std::ldexp(magnitude, -18);
+  const auto down = [](double x) {
+    const auto f = static_cast<float>(x);
+    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  };
+  const auto up = [](double x) {
+    const auto f = static_cast<float>(x);
+    return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  };
+  const float r = up(rMax + pad);
+  return {{-r, -r, down(zMin - pad)}, {r, r, up(zMax + pad)}};
+}
+
+}  // namespace
+
+Stats& Stats::operator+=(const Stats& other) noexcept {
+  rays += other.rays;
+  nodesVisited += other.nodesVisited;
+  shellTests += other.shellTests;
+  quadratics += other.quadratics;
+  return *this;
+}
+
+Shape::Shape(Profile profile, const BuildOptions& options)
+    : impl_(std::make_unique<Impl>(std::move(profile), options)) {
+  Impl& impl = *impl_;
+  const std::span<const Point2> points = impl.profile.points();
+
+  double zMin = points[0].z, zMax = points[0].z, rMax = 0.0;
+  for (const Point2& p : points) {
+    zMin = std::min(zMin, p.z);
+    zMax = std::max(zMax, p.z);
+    rMax = std::max(rMax, p.r);
+  }
+  const double zCentre = 0.5 * zMin + 0.5 * zMax;  // halves first: no overflow near the double range
+  impl.local.reserve(points.size());
+  double radius = 0.0;
+  for (const Point2& p : points) {
+    impl.local.push_back({p.r, p.z - zCentre});
+    radius = std::max(radius, std::hypot(p.r, impl.local.back().z));
+  }
+  // The farthest surface point from the centre is a vertex (distance is convex along a segment).
+  impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
+
+  impl.mibit = detail::buildMibitTree(impl.local, options);
+  if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+  impl.bounds = paddedBounds(rMax, zMin, zMax);
+}
+
+Shape::~Shape() = default;
+Shape::Shape(Shape&&) noexcept = default;
+Shape& Shape::operator=(Shape&&) noexcept = default;
+
+const Profile& Shape::profile() const noexcept { return impl_->profile; }
+const BuildOptions& Shape::options() const noexcept { return impl_->options; }
+Bounds Shape::bounds() const noexcept { return impl_->bounds; }
+
+std::size_t Shape::treeNodeCount() const noexcept {
+  switch (impl_->options.method) {
+    case Method::mibit: {
+      // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
+      // the interval's own root being its explicit leaf).
+      std::size_t nodes = impl_->mibit.nodes.size();
+      for (const detail::MonotoneInterval& interval : impl_->mibit.intervals) nodes += 2 * std::size_t{interval.leaves} - 2;
+      return nodes;
+    }
+    case Method::kajiya: return impl_->strips.nodes.size();
+    case Method::linear: return 0;
+  }
+  return 0;
+}
+
+std::size_t Shape::memoryBytes() const noexcept {
+  const Impl& impl = *impl_;
+  return sizeof(Impl) + impl.local.capacity() * sizeof(Point2) +
+         impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
+         impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
+         impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
+         impl.strips.nodes.capacity() * sizeof(detail::StripNode) +
+         impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
+}
+
+}  // namespace revolve

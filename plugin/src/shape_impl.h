@@ -1,0 +1,26 @@
+// What a built Shape holds. Internal: the Embree glue and the queries read it directly.
+#pragma once
+
+#include <revolve/revolve.h>
+
+#include "kajiya/strip_tree.h"
+#include "kernel/meridian_ray.h"
+#include "mibit/mibit_tree.h"
+
+#include <vector>
+
+namespace revolve {
+
+struct Shape::Impl {
+  Impl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
+
+  Profile profile;
+  BuildOptions options;
+  detail::ShapeFrame frame;
+  std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)
+  detail::MibitTree mibit;      // always built: it also serves closest-point queries
+  detail::StripTree strips;     // built for Method::kajiya only
+  Bounds bounds;
+};
+
+}  // namespace revolve

@@ -1,0 +1,82 @@
+// One search over a shape, whatever its method, and the per-segment visitors the queries use.
+//
+// Determinism: every segment's hits are computed over the same range [lo, hi at the start], never
+// over the shrinking best-so-far, and ties go to the lower segment index. The nearest hit is then
+// the same bit for bit whichever method found it, and methods can be checked hit for hit.
+#pragma once
+
+#include "kajiya/strip_search.h"
+#include "kernel/segment_hits.h"
+#include "mibit/mibit_search.h"
+#include "shape_impl.h"
+
+#include <cstdint>
+#include <limits>
+
+namespace revolve::detail {
+
+template <bool kCount, class VisitSegment>
+inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double& hi, VisitSegment&& visit,
+                        Stats& stats) noexcept {
+  switch (shape.options.method) {
+    case Method::mibit:
+      searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
+      break;
+    case Method::kajiya: searchStripTree<kCount>(shape.strips, ray, hi, visit, stats); break;
+    case Method::linear: {
+      const auto segments = static_cast<std::uint32_t>(shape.local.size() - 1);
+      for (std::uint32_t k = 0; k < segments; ++k) {
+        if (visit(k)) return;
+      }
+      break;
+    }
+  }
+}
+
+template <bool kCount>
+inline SegmentHits hitsOfSegment(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
+                                 Stats& stats) noexcept {
+  const SegmentHits hits = segmentHits(ray, shape.local[k], shape.local[k + 1], ray.lo, hi);
+  if constexpr (kCount) stats.quadratics += hits.solved;
+  return hits;
+}
+
+// The nearest hit: (s, segment), ties to the lower segment.
+template <bool kCount>
+struct NearestHit {
+  const Shape::Impl& shape;
+  const MeridianRay& ray;
+  double& hi;  // the search's pruning bound, lowered to the best hit
+  Stats& stats;
+  const double leafHi = hi;
+  double s = std::numeric_limits<double>::infinity();
+  std::uint32_t segment = kNoSegment;
+  static constexpr std::uint32_t kNoSegment = 0xffffffffu;
+
+  bool operator()(std::uint32_t k) noexcept {
+    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, leafHi, stats);
+    if (hits.count > 0 && (hits.s[0] < s || (hits.s[0] == s && k < segment))) {
+      s = hits.s[0];
+      segment = k;
+      hi = s;
+    }
+    return false;
+  }
+  bool found() const noexcept { return segment != kNoSegment; }
+};
+
+// Whether any hit exists: the search ends at the first.
+template <bool kCount>
+struct AnyHit {
+  const Shape::Impl& shape;
+  const MeridianRay& ray;
+  Stats& stats;
+  bool found = false;
+
+  bool operator()(std::uint32_t k) noexcept {
+    found = hitsOfSegment<kCount>(shape, ray, k, ray.hi, stats).count > 0;
+    return found;
+  }
+};
+
+}  // namespace revolve::detail
