@@ -1,0 +1,169 @@
+// revolve-trace: the nearest hit of each ray of a file with a surface of revolution, traced through
+// Embree (rtcIntersect1 on a scene holding the shape), written as CSV. An interface other tools
+// depend on: its options and file formats are documented in README.md and kept exact.
+#include "common/embree_handles.h"
+#include "io/text_files.h"
+
+#include <revolve/revolve.h>
+
+#include <CLI/CLI.hpp>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace revolve;
+
+struct Options {
+  std::string profile, rays, out;
+  std::string method = "mibit", shell = "hybrid";
+  std::uint32_t subdivisions = 0;
+  std::uint32_t slices = 64;
+};
+
+// The profile, with a ProfileError or warning pointed at the file line of the point concerned.
+Profile loadProfile(const std::string& path) {
+  const io::ProfileFile file = io::readProfileCsv(path);
+  try {
+    Profile profile(file.points);
+    for (const ProfileWarning& warning : profile.warnings()) {
+      std::fprintf(stderr, "%s:%zu: warning: %s\n", path.c_str(), file.lines[warning.index], warning.message.c_str());
+    }
+    return profile;
+  } catch (const ProfileError& error) {
+    const std::size_t line = error.index() < file.lines.size() ? file.lines[error.index()] : 0;
+    throw io::InputError(path, line, error.what());
+  }
+}
+
+Vec3 unit(float x, float y, float z) {
+  const float length = std::sqrt(x * x + y * y + z * z);
+  return length > 0.0f ? Vec3{x / length, y / length, z / length} : Vec3{0.0f, 0.0f, 0.0f};
+}
+
+// A mesh hit in the exact surface's conventions: u from the hit's azimuth, v from its projection
+// on the profile segment its triangle belongs to.
+Hit meshHit(const Profile& profile, std::uint32_t slices, const Ray& ray, const RTCRayHit& rayHit) {
+  Hit hit;
+  hit.t = rayHit.ray.tfar;
+  hit.point = {ray.origin.x + hit.t * ray.direction.x, ray.origin.y + hit.t * ray.direction.y,
+               ray.origin.z + hit.t * ray.direction.z};
+  hit.normal = unit(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z);
+  hit.segment = rayHit.hit.primID / (2 * slices);
+  const double u = std::atan2(double(hit.point.y), double(hit.point.x)) * (0.5 / std::numbers::pi);
+  hit.u = float(u < 0.0 ? u + 1.0 : u);
+  if (hit.u >= 1.0f) hit.u = 0.0f;
+  const Point2 a = profile.points()[hit.segment], b = profile.points()[hit.segment + 1];
+  const double rho = std::hypot(double(hit.point.x), double(hit.point.y));
+  const double er = b.r - a.r, ez = b.z - a.z;
+  const double along = std::clamp(((rho - a.r) * er + (hit.point.z - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
+  const std::span<const double> arc = profile.arcLength();
+  hit.v = float((arc[hit.segment] + along * (arc[hit.segment + 1] - arc[hit.segment])) / arc.back());
+  return hit;
+}
+
+Hit exactHit(const RTCRayHit& rayHit) {
+  Hit hit{};
+  hit.t = rayHit.ray.tfar;
+  hit.normal = unit(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z);
+  hit.u = rayHit.hit.u;
+  hit.v = rayHit.hit.v;
+  hit.segment = rayHit.hit.primID;
+  return hit;
+}
+
+std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>& rays, const Profile& profile,
+                                         bool mesh, std::uint32_t slices) {
+  std::vector<std::optional<Hit>> hits(rays.size());
+  tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
+    const Ray& ray = rays[i];
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayHit{};
+    rayHit.ray.org_x = ray.origin.x;
+    rayHit.ray.org_y = ray.origin.y;
+    rayHit.ray.org_z = ray.origin.z;
+    rayHit.ray.dir_x = ray.direction.x;
+    rayHit.ray.dir_y = ray.direction.y;
+    rayHit.ray.dir_z = ray.direction.z;
+    rayHit.ray.tnear = ray.tnear;
+    rayHit.ray.tfar = ray.tfar;
+    rayHit.ray.mask = ~0u;
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rayHit);
+    if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+      hits[i] = mesh ? meshHit(profile, slices, ray, rayHit) : exactHit(rayHit);
+    }
+  });
+  return hits;
+}
+
+BuildOptions buildOptions(const Options& options) {
+  BuildOptions build;
+  build.method = options.method == "linear" ? Method::linear : options.method == "kajiya" ? Method::kajiya : Method::mibit;
+  build.shell = options.shell == "cylinder" ? ShellKind::cylinder : options.shell == "cone" ? ShellKind::cone : ShellKind::hybrid;
+  build.subdivisions = options.subdivisions;
+  return build;
+}
+
+void run(const Options& options) {
+  const Profile profile = loadProfile(options.profile);
+  const std::vector<Ray> rays = io::readRaysCsv(options.rays);
+  const app::Device device = app::newDevice();
+  const app::Scene scene = app::newScene(device.get());
+  const bool mesh = options.method == "mesh";
+  std::optional<Shape> shape;
+  std::optional<Geometry> geometry;
+  if (mesh) {
+    RTCGeometry triangles = newTessellatedGeometry(device.get(), profile, options.slices);
+    rtcAttachGeometry(scene.get(), triangles);
+    rtcReleaseGeometry(triangles);
+  } else {
+    shape.emplace(profile, buildOptions(options));
+    geometry.emplace(device.get(), *shape);
+    rtcAttachGeometry(scene.get(), geometry->handle());
+  }
+  rtcCommitScene(scene.get());
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  io::writeHitsCsv(options.out, traceAll(scene.get(), rays, profile, mesh, options.slices));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Traces each ray of a CSV file against a surface of revolution through Embree and writes the "
+               "nearest hit of each."};
+  app.add_option("--profile", options.profile, "profile CSV: optional header r,z; one point r,z per line")
+      ->required();
+  app.add_option("--rays", options.rays, "rays CSV: optional header ox,oy,oz,dx,dy,dz,tnear,tfar; one ray per line")
+      ->required();
+  app.add_option("--out", options.out, "hits CSV to write: hit,t,nx,ny,nz,u,v per ray")->required();
+  app.add_option("--method", options.method, "intersection method")
+      ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
+      ->capture_default_str();
+  app.add_option("--shell", options.shell, "MIBIT bounding shells")
+      ->check(CLI::IsMember({"cylinder", "cone", "hybrid"}))
+      ->capture_default_str();
+  app.add_option("--subdivisions", options.subdivisions,
+                 "MIBIT leaves per monotone interval (0: one segment per leaf)")
+      ->capture_default_str();
+  app.add_option("--slices", options.slices, "azimuthal steps of the tessellated mesh (--method mesh)")
+      ->check(CLI::Range(3u, 1u << 24))
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    run(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "revolve-trace: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}
