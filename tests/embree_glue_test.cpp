@@ -1,0 +1,522 @@
+// Every Embree path must answer what the pure C++ query answers for the same object-space ray:
+// rtcIntersect1/4/8/16 and rtcOccluded1/4/8/16 with valid masks, instances, filter functions,
+// point queries. The pure query is itself checked against independent references elsewhere.
+#include "support/reference.h"
+#include "support/test_profiles.h"
+
+#include <revolve/revolve.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <numbers>
+
+namespace revolve {
+namespace {
+
+struct DeviceRelease {
+  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
+};
+struct SceneRelease {
+  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
+};
+using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceRelease>;
+using ScenePtr = std::unique_ptr<RTCSceneTy, SceneRelease>;
+
+DevicePtr newDevice() {
+  DevicePtr device(rtcNewDevice(nullptr));
+  rtcSetDeviceErrorFunction(
+      device.get(), [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
+      nullptr);
+  return device;
+}
+
+// One shape in a scene of its own.
+struct SingleShapeScene {
+  DevicePtr device = newDevice();
+  Shape shape;
+  Geometry geometry;
+  ScenePtr scene;
+  unsigned geomID;
+
+  explicit SingleShapeScene(Shape s, Geometry::Options options = {})
+      : shape(std::move(s)), geometry(device.get(), shape, options), scene(rtcNewScene(device.get())) {
+    geomID = rtcAttachGeometry(scene.get(), geometry.handle());
+    rtcCommitScene(scene.get());
+  }
+};
+
+RTCRayHit toRayHit(const Ray& ray) {
+  RTCRayHit rh{};
+  rh.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
+            0.0f, ray.tfar, ~0u, 0u, 0u};
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+// Exact comparison of an Embree answer with the pure query's.
+void expectSameHit(const std::optional<Hit>& expected, float tfar, float ngx, float ngy, float ngz, float u, float v,
+                   unsigned primID, unsigned geomID, unsigned expectedGeomID, const Ray& ray) {
+  SCOPED_TRACE(::testing::Message() << "ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z
+                                    << ") d=(" << ray.direction.x << "," << ray.direction.y << "," << ray.direction.z << ")");
+  if (!expected) {
+    EXPECT_EQ(geomID, RTC_INVALID_GEOMETRY_ID);
+    EXPECT_EQ(tfar, ray.tfar);
+    return;
+  }
+  ASSERT_EQ(geomID, expectedGeomID);
+  EXPECT_EQ(tfar, expected->t);
+  EXPECT_EQ(ngx, expected->normal.x);
+  EXPECT_EQ(ngy, expected->normal.y);
+  EXPECT_EQ(ngz, expected->normal.z);
+  EXPECT_EQ(u, expected->u);
+  EXPECT_EQ(v, expected->v);
+  EXPECT_EQ(primID, expected->segment);
+}
+
+class EmbreeGlueTest : public ::testing::TestWithParam<Method> {};
+
+TEST_P(EmbreeGlueTest, Intersect1MatchesThePureQuery) {
+  std::mt19937_64 random(101);
+  for (const testing::NamedProfile& named : testing::standardProfiles()) {
+    SCOPED_TRACE(named.name);
+    SingleShapeScene s(Shape(Profile(named.points), {GetParam()}));
+    std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 2000);
+    const std::vector<Ray> awkward = testing::axisAlignedRays(s.shape, random, 500);
+    rays.insert(rays.end(), awkward.begin(), awkward.end());
+    for (const Ray& ray : rays) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rh = toRayHit(ray);
+      rtcIntersect1(s.scene.get(), &context, &rh);
+      expectSameHit(intersect(s.shape, ray), rh.ray.tfar, rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z, rh.hit.u, rh.hit.v,
+                    rh.hit.primID, rh.hit.geomID, s.geomID, ray);
+      EXPECT_EQ(rh.hit.instID[0], RTC_INVALID_GEOMETRY_ID);
+    }
+  }
+}
+
+template <int N, class RayHitN>
+void checkPackets(Method method) {
+  std::mt19937_64 random(202 + N);
+  SingleShapeScene s(Shape(Profile(testing::hollowVase()), {method}));
+  const std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 64 * N);
+  for (std::size_t first = 0; first < rays.size(); first += N) {
+    alignas(64) int valid[N];
+    alignas(64) RayHitN packet{};
+    for (int i = 0; i < N; ++i) {
+      valid[i] = random() % 4 == 0 ? 0 : -1;  // some lanes off: they must stay untouched
+      const Ray& ray = rays[first + i];
+      packet.ray.org_x[i] = ray.origin.x, packet.ray.org_y[i] = ray.origin.y, packet.ray.org_z[i] = ray.origin.z;
+      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y, packet.ray.dir_z[i] = ray.direction.z;
+      packet.ray.tnear[i] = ray.tnear, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
+      packet.ray.time[i] = 0.0f, packet.ray.flags[i] = 0u;
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    if constexpr (N == 4) rtcIntersect4(valid, s.scene.get(), &context, &packet);
+    if constexpr (N == 8) rtcIntersect8(valid, s.scene.get(), &context, &packet);
+    if constexpr (N == 16) rtcIntersect16(valid, s.scene.get(), &context, &packet);
+    for (int i = 0; i < N; ++i) {
+      const Ray& ray = rays[first + i];
+      if (valid[i] == 0) {
+        EXPECT_EQ(packet.hit.geomID[i], RTC_INVALID_GEOMETRY_ID);
+        EXPECT_EQ(packet.ray.tfar[i], ray.tfar);
+        continue;
+      }
+      expectSameHit(intersect(s.shape, ray), packet.ray.tfar[i], packet.hit.Ng_x[i], packet.hit.Ng_y[i],
+                    packet.hit.Ng_z[i], packet.hit.u[i], packet.hit.v[i], packet.hit.primID[i], packet.hit.geomID[i],
+                    s.geomID, ray);
+    }
+    // Occlusion packets: tfar becomes -inf exactly for the occluded active lanes.
+    alignas(64) decltype(packet.ray) shadow = packet.ray;
+    for (int i = 0; i < N; ++i) shadow.tfar[i] = rays[first + i].tfar;
+    if constexpr (N == 4) rtcOccluded4(valid, s.scene.get(), &context, &shadow);
+    if constexpr (N == 8) rtcOccluded8(valid, s.scene.get(), &context, &shadow);
+    if constexpr (N == 16) rtcOccluded16(valid, s.scene.get(), &context, &shadow);
+    for (int i = 0; i < N; ++i) {
+      const bool expected = valid[i] != 0 && occluded(s.shape, rays[first + i]);
+      EXPECT_EQ(shadow.tfar[i] == -std::numeric_limits<float>::infinity(), expected);
+    }
+  }
+}
+
+TEST_P(EmbreeGlueTest, Packets4And8And16MatchThePureQueryAndRespectTheValidMask) {
+  checkPackets<4, RTCRayHit4>(GetParam());
+  checkPackets<8, RTCRayHit8>(GetParam());
+  checkPackets<16, RTCRayHit16>(GetParam());
+}
+
+TEST_P(EmbreeGlueTest, Occluded1MatchesThePureQuery) {
+  std::mt19937_64 random(303);
+  for (const testing::NamedProfile& named : testing::standardProfiles()) {
+    SCOPED_TRACE(named.name);
+    SingleShapeScene s(Shape(Profile(named.points), {GetParam()}));
+    for (const Ray& ray : testing::incoherentRays(s.shape, random, 1000)) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRay shadow = toRayHit(ray).ray;
+      rtcOccluded1(s.scene.get(), &context, &shadow);
+      EXPECT_EQ(shadow.tfar == -std::numeric_limits<float>::infinity(), occluded(s.shape, ray));
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllMethods, EmbreeGlueTest, ::testing::Values(Method::mibit, Method::linear, Method::kajiya),
+                         [](const auto& info) {
+                           return std::string(info.param == Method::mibit ? "mibit" : info.param == Method::linear ? "linear" : "kajiya");
+                         });
+
+// Instancing. One shape, one geometry, one object scene, instanced several times. The instances
+// without translation (power-of-two scales, quarter turns) map rays exactly in float, so Embree's
+// object-space ray is the one computed here and the answers must be identical; translated ones
+// round, so their t may differ by the rounding of the ray (bounded below).
+struct Placement {
+  float scale;       // uniform, a power of two
+  int quarterTurns;  // about z
+  Vec3 offset;
+};
+
+Vec3 placeVector(const Placement& p, Vec3 v, bool point) {
+  const float c[4] = {1, 0, -1, 0}, s[4] = {0, 1, 0, -1};
+  const float cs = c[p.quarterTurns], sn = s[p.quarterTurns];
+  return {(cs * v.x - sn * v.y) * p.scale + (point ? p.offset.x : 0.0f),
+          (sn * v.x + cs * v.y) * p.scale + (point ? p.offset.y : 0.0f), v.z * p.scale + (point ? p.offset.z : 0.0f)};
+}
+
+void checkInstances(const std::vector<Placement>& placements, bool exact) {
+  DevicePtr device = newDevice();
+  const Shape shape(Profile(testing::hollowVase()));
+  Geometry geometry(device.get(), shape);
+  ScenePtr object(rtcNewScene(device.get()));
+  rtcAttachGeometry(object.get(), geometry.handle());
+  rtcCommitScene(object.get());
+  ScenePtr world(rtcNewScene(device.get()));
+  std::vector<unsigned> ids;
+  for (const Placement& p : placements) {
+    RTCGeometry instance = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(instance, object.get());
+    const Vec3 x = placeVector(p, {1, 0, 0}, false), y = placeVector(p, {0, 1, 0}, false), z = placeVector(p, {0, 0, 1}, false);
+    const float xfm[12] = {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, p.offset.x, p.offset.y, p.offset.z};  // column-major 3x4
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcCommitGeometry(instance);
+    ids.push_back(rtcAttachGeometry(world.get(), instance));
+    rtcReleaseGeometry(instance);
+  }
+  rtcCommitScene(world.get());
+
+  std::mt19937_64 random(404);
+  std::size_t answered = 0;
+  for (std::size_t k = 0; k < placements.size(); ++k) {
+    for (const Ray& objectRay : testing::incoherentRays(shape, random, 2000, 2.0)) {
+      const Ray worldRay{placeVector(placements[k], objectRay.origin, true), placeVector(placements[k], objectRay.direction, false)};
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rh = toRayHit(worldRay);
+      rtcIntersect1(world.get(), &context, &rh);
+      const std::optional<Hit> expected = intersect(shape, objectRay);
+      if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.instID[0] != ids[k]) {
+        // Missed everything, or another instance lies nearer: then this one's hit cannot be nearer.
+        if (exact && expected && rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+          EXPECT_LE(rh.ray.tfar, expected->t);
+        }
+        if (exact && rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+          EXPECT_FALSE(expected.has_value());
+        }
+        continue;
+      }
+      ++answered;
+      ASSERT_TRUE(expected.has_value());
+      if (exact) {
+        EXPECT_EQ(rh.ray.tfar, expected->t);
+        EXPECT_EQ(rh.hit.primID, expected->segment);
+        EXPECT_EQ(rh.hit.Ng_z, expected->normal.z);  // object-space normal, as Embree's contract says
+      } else {
+        // The translated ray is off by a float ulp of the world coordinates (|offset| + reach <= 8),
+        // which moves the hit along the ray by at most that over the cosine of incidence; rays
+        // within 1/16 of grazing are left out.
+        const double length = std::hypot(objectRay.direction.x, objectRay.direction.y, objectRay.direction.z);
+        const double cosine = std::abs(expected->normal.x * objectRay.direction.x + expected->normal.y * objectRay.direction.y +
+                                       expected->normal.z * objectRay.direction.z) / length;
+        if (cosine < 1.0 / 16) continue;
+        EXPECT_NEAR(rh.ray.tfar * length, expected->t * length, 8 * 0x1p-21 / cosine);
+      }
+    }
+  }
+  EXPECT_GT(answered, 1000u * placements.size());
+}
+
+TEST(EmbreeInstancingTest, ExactInstancesAnswerBitForBitLikeThePureQuery) {
+  checkInstances({{2, 1, {0, 0, 0}}}, true);
+  checkInstances({{0.5f, 2, {0, 0, 0}}}, true);
+  checkInstances({{1, 3, {0, 0, 0}}}, true);
+}
+
+TEST(EmbreeInstancingTest, OneShapeSharedByTranslatedInstancesReportsEachInstance) {
+  checkInstances({{1, 0, {0, 0, 0}}, {2, 1, {3, 0, 0}}, {0.5f, 2, {0, 3, 1}}, {1, 3, {-3, -2, 0.5f}}}, false);
+}
+
+// Filters: reject every hit with u < 1/2 (the half y > 0 of the object). The expected answer
+// comes from the long-double reference's list of all hits along the ray.
+void rejectLowerHalf(const RTCFilterFunctionNArguments* args) {
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == -1 && RTCHitN_u(args->hit, args->N, i) < 0.5f) args->valid[i] = 0;
+  }
+}
+
+std::optional<long double> firstAcceptedReferenceHit(const std::vector<Point2>& points, const Ray& ray, bool& ambiguous) {
+  const reference::RefRay refRay{ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                                 ray.direction.z, ray.tnear, ray.tfar};
+  ambiguous = false;
+  for (const reference::RefHit& hit : reference::allHits(points, refRay)) {
+    const long double y = refRay.oy + hit.t * refRay.dy, x = refRay.ox + hit.t * refRay.dx;
+    const long double phi = std::atan2(y, x);
+    const long double u = (phi < 0 ? phi + 2 * std::numbers::pi_v<long double> : phi) / (2 * std::numbers::pi_v<long double>);
+    if (std::abs(y) < 1e-4L * std::abs(x) + 1e-6L) ambiguous = true;  // on the filter's edge
+    if (u >= 0.5L) return hit.t;  // the filter keeps these
+  }
+  return std::nullopt;
+}
+
+TEST(EmbreeFilterTest, IntersectionFilterRejectionFindsTheNextHit) {
+  std::mt19937_64 random(505);
+  const std::vector<Point2> points = testing::hollowVase();
+  for (bool viaContext : {false, true}) {
+    SCOPED_TRACE(viaContext ? "context filter" : "geometry filter");
+    SingleShapeScene s{Shape(Profile(points))};
+    if (!viaContext) {
+      s.geometry.setIntersectFilter(rejectLowerHalf);
+      rtcCommitGeometry(s.geometry.handle());
+      rtcCommitScene(s.scene.get());
+    }
+    std::size_t checked = 0, secondHits = 0;
+    for (const Ray& ray : testing::incoherentRays(s.shape, random, 3000)) {
+      bool ambiguous;
+      const std::optional<long double> expected = firstAcceptedReferenceHit(points, ray, ambiguous);
+      if (ambiguous) continue;
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      if (viaContext) context.filter = rejectLowerHalf;
+      RTCRayHit rh = toRayHit(ray);
+      rtcIntersect1(s.scene.get(), &context, &rh);
+      ++checked;
+      ASSERT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, expected.has_value());
+      if (!expected) continue;
+      EXPECT_GE(rh.hit.u, 0.5f);
+      EXPECT_NEAR(rh.ray.tfar, double(*expected), 1e-5 * (1.0 + double(*expected)));
+      const std::optional<Hit> unfiltered = intersect(s.shape, ray);
+      secondHits += unfiltered && unfiltered->t < rh.ray.tfar;
+    }
+    EXPECT_GT(checked, 2500u);
+    EXPECT_GT(secondHits, 100u);  // the filter really did push hits further along
+  }
+}
+
+TEST(EmbreeFilterTest, OcclusionFilterIsHonoured) {
+  std::mt19937_64 random(606);
+  const std::vector<Point2> points = testing::hollowVase();
+  SingleShapeScene s{Shape(Profile(points))};
+  s.geometry.setOcclusionFilter(rejectLowerHalf);
+  rtcCommitGeometry(s.geometry.handle());
+  rtcCommitScene(s.scene.get());
+  std::size_t flipped = 0;
+  for (const Ray& ray : testing::incoherentRays(s.shape, random, 3000)) {
+    bool ambiguous;
+    const bool expected = firstAcceptedReferenceHit(points, ray, ambiguous).has_value();
+    if (ambiguous) continue;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay shadow = toRayHit(ray).ray;
+    rtcOccluded1(s.scene.get(), &context, &shadow);
+    EXPECT_EQ(shadow.tfar == -std::numeric_limits<float>::infinity(), expected);
+    flipped += occluded(s.shape, ray) && !expected;
+  }
+  EXPECT_GT(flipped, 50u);
+}
+
+TEST(EmbreeFilterTest, FiltersWorkInPackets) {
+  std::mt19937_64 random(707);
+  const std::vector<Point2> points = testing::hollowVase();
+  SingleShapeScene s{Shape(Profile(points))};
+  s.geometry.setIntersectFilter(rejectLowerHalf);
+  rtcCommitGeometry(s.geometry.handle());
+  rtcCommitScene(s.scene.get());
+  const std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 8 * 200);
+  for (std::size_t first = 0; first < rays.size(); first += 8) {
+    alignas(32) int valid[8];
+    alignas(32) RTCRayHit8 packet{};
+    for (int i = 0; i < 8; ++i) {
+      valid[i] = -1;
+      const Ray& ray = rays[first + i];
+      packet.ray.org_x[i] = ray.origin.x, packet.ray.org_y[i] = ray.origin.y, packet.ray.org_z[i] = ray.origin.z;
+      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y, packet.ray.dir_z[i] = ray.direction.z;
+      packet.ray.tnear[i] = 0.0f, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    rtcIntersect8(valid, s.scene.get(), &context, &packet);
+    for (int i = 0; i < 8; ++i) {
+      bool ambiguous;
+      const std::optional<long double> expected = firstAcceptedReferenceHit(points, rays[first + i], ambiguous);
+      if (ambiguous) continue;
+      ASSERT_EQ(packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID, expected.has_value());
+      if (expected) {
+        EXPECT_NEAR(packet.ray.tfar[i], double(*expected), 1e-5 * (1.0 + double(*expected)));
+      }
+    }
+  }
+}
+
+TEST(EmbreeStatsTest, CountingGeometryAccumulatesWork) {
+  std::mt19937_64 random(808);
+  SingleShapeScene s(Shape(Profile(testing::sphereLike(1.0, 256))), Geometry::Options{true});
+  const std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 1000);
+  Stats pure;
+  for (const Ray& ray : rays) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = toRayHit(ray);
+    rtcIntersect1(s.scene.get(), &context, &rh);
+    intersect(s.shape, ray, &pure);
+  }
+  const Stats embree = s.geometry.stats();
+  // Embree calls the geometry only for rays that reach its box; each such call counts like the pure query.
+  EXPECT_GT(embree.rays, 900u);
+  EXPECT_LE(embree.rays, pure.rays);
+  EXPECT_GT(embree.quadratics, 0u);
+  EXPECT_LE(embree.quadratics, pure.quadratics);
+  EXPECT_LE(embree.nodesVisited, pure.nodesVisited);
+}
+
+// Point queries: the closest surface point through Embree (also through a similarity instance)
+// against the long-double meridian distance.
+TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
+  DevicePtr device = newDevice();
+  const std::vector<Point2> points = testing::hollowVase();
+  const Shape shape{Profile(points)};
+  Geometry geometry(device.get(), shape);
+  ScenePtr object(rtcNewScene(device.get()));
+  const unsigned geomID = rtcAttachGeometry(object.get(), geometry.handle());
+  rtcCommitScene(object.get());
+  ScenePtr world(rtcNewScene(device.get()));
+  RTCGeometry instance = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, object.get());
+  const float xfm[12] = {0, 2, 0, -2, 0, 0, 0, 0, 2, 5, 0, 0};  // quarter turn, scale 2, shift x by 5
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+  rtcCommitGeometry(instance);
+  const unsigned instID = rtcAttachGeometry(world.get(), instance);
+  rtcReleaseGeometry(instance);
+  rtcCommitScene(world.get());
+
+  struct Lookup {
+    const Geometry* geometry;
+    unsigned geomID;
+  } lookup{&geometry, geomID};
+  const GeometryLookup find = [](void* user, unsigned, unsigned id) -> const Geometry* {
+    auto* l = static_cast<Lookup*>(user);
+    return id == l->geomID ? l->geometry : nullptr;
+  };
+
+  std::mt19937_64 random(909);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.5f);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 p{coordinate(random), coordinate(random), coordinate(random)};
+    const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
+    const std::optional<ScenePoint> direct = closestPoint(object.get(), p, std::numeric_limits<float>::infinity(), find, &lookup);
+    ASSERT_TRUE(direct.has_value());
+    EXPECT_NEAR(direct->distance, expected, 1e-6 * (1.0 + expected));
+    EXPECT_EQ(direct->instID, RTC_INVALID_GEOMETRY_ID);
+    EXPECT_NEAR(double(reference::meridianDistance(points, direct->point.x, direct->point.y, direct->point.z)), 0.0, 1e-6);
+    // The same point seen through the instance: world = 2 R p + (5, 0, 0), distances double.
+    const Vec3 w{-2 * p.y + 5, 2 * p.x, 2 * p.z};
+    const std::optional<ScenePoint> viaInstance = closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+    ASSERT_TRUE(viaInstance.has_value());
+    EXPECT_EQ(viaInstance->instID, instID);
+    EXPECT_NEAR(viaInstance->distance, 2 * expected, 4e-6 * (1.0 + expected));
+  }
+}
+
+// The tessellated baseline: normals agree with the exact surface's, and hits lie within its
+// Hausdorff error bound of the exact ones (for non-grazing rays).
+TEST(TessellationTest, MeshNormalsAndHitsAgreeWithTheExactSurface) {
+  DevicePtr device = newDevice();
+  const Profile profile(testing::sphereLike(1.0, 32));
+  const std::uint32_t slices = 64;
+  ScenePtr scene(rtcNewScene(device.get()));
+  RTCGeometry mesh = newTessellatedGeometry(device.get(), profile, slices);
+  rtcAttachGeometry(scene.get(), mesh);
+  rtcReleaseGeometry(mesh);
+  rtcCommitScene(scene.get());
+  const Shape shape(profile);
+  const double error = tessellationError(profile, slices);
+  EXPECT_NEAR(error, 1.0 - std::cos(std::numbers::pi / slices), 1e-15);
+
+  std::mt19937_64 random(1010);
+  std::size_t compared = 0;
+  for (const Ray& ray : testing::incoherentRays(shape, random, 4000)) {
+    const std::optional<Hit> exact = intersect(shape, ray);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = toRayHit(ray);
+    rtcIntersect1(scene.get(), &context, &rh);
+    if (!exact || rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+    const double length = std::hypot(ray.direction.x, ray.direction.y, ray.direction.z);
+    const double cosine = -(exact->normal.x * ray.direction.x + exact->normal.y * ray.direction.y +
+                            exact->normal.z * ray.direction.z) / length;
+    if (cosine < 0.3) continue;  // grazing: the mesh may hit a different facet or miss
+    const double ngLength = std::hypot(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const double agreement = (rh.hit.Ng_x * exact->normal.x + rh.hit.Ng_y * exact->normal.y + rh.hit.Ng_z * exact->normal.z) / ngLength;
+    EXPECT_GT(agreement, 0.9) << "mesh normal points the other way";
+    // Each surface lies within `error` of the other (Hausdorff). Between the two hits both are
+    // locally planes, so the hits are at most error / cosine apart along the ray, with the
+    // smaller of the two surfaces' cosines of incidence (plus float rounding of both t values).
+    const double facetCosine = -(rh.hit.Ng_x * ray.direction.x + rh.hit.Ng_y * ray.direction.y + rh.hit.Ng_z * ray.direction.z) /
+                               (ngLength * length);
+    EXPECT_NEAR(rh.ray.tfar * length, exact->t * length, error / std::min(cosine, facetCosine) + 1e-5);
+    ++compared;
+  }
+  EXPECT_GT(compared, 1000u);
+}
+
+// Where the surface touches its box (a cap lying on the box's top face, the widest circle on a side
+// face), Embree's single-precision box test must not cull hits: the bounds are padded.
+TEST(EmbreeBoundsTest, HitsWhereTheSurfaceTouchesItsBoxAreNotCulled) {
+  const std::vector<Point2> points = testing::cappedCylinder(0.5, -0.75, 0.75);
+  SingleShapeScene s{Shape(Profile(points))};
+  std::mt19937_64 random(1111);
+  std::uniform_real_distribution<double> jitter(-4.0, 4.0);
+  std::size_t tested = 0, missed = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Aim at the top cap's rim near a point where it touches the box (phi = 0, 90, 180, 270
+    // degrees), a few float ulps inside, from above at a random slant.
+    const double phi = std::numbers::pi / 2 * (i % 4) + jitter(random) * 1e-7;
+    const double r = 0.5 - std::abs(jitter(random)) * 6e-8;
+    const Vec3 target{float(r * std::cos(phi)), float(r * std::sin(phi)), 0.75f};
+    const Vec3 origin{target.x + float(jitter(random) * 0.1), target.y + float(jitter(random) * 0.1), 3.0f};
+    const Ray ray{origin, {target.x - origin.x, target.y - origin.y, target.z - origin.z}};
+    // The float ray may pass beside the target: the long-double reference says whether it truly
+    // hits the cap, and rays within 1e-9 of the rim either way are left out.
+    const std::optional<reference::RefHit> truth = reference::intersectProfile(
+        points, {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, 0.0L,
+                 std::numeric_limits<long double>::infinity()});
+    if (!truth || truth->segment != 2) continue;
+    const long double x = ray.origin.x + truth->t * ray.direction.x, y = ray.origin.y + truth->t * ray.direction.y;
+    if (std::hypot(x, y) > 0.5L * (1 - 1e-9L)) continue;
+    ++tested;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = toRayHit(ray);
+    rtcIntersect1(s.scene.get(), &context, &rh);
+    missed += rh.hit.geomID == RTC_INVALID_GEOMETRY_ID;
+  }
+  EXPECT_GT(tested, 5000u);
+  EXPECT_EQ(missed, 0u);
+}
+
+}  // namespace
+}  // namespace revolve

@@ -1,0 +1,117 @@
+// MIBIT (every shell kind and search option), Wang's linear scan and Kajiya's strip tree must
+// agree hit for hit. All share the segment kernel, so they differ only in what their search prunes:
+// any difference is a node pruned that held the nearest hit. Bit-exact agreement is expected
+// because each segment's hits are computed over the same range by every method (shape_search.h).
+#include "support/test_profiles.h"
+
+#include <revolve/revolve.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+namespace revolve {
+namespace {
+
+struct Variant {
+  std::string name;
+  BuildOptions options;
+};
+
+std::vector<Variant> variants() {
+  std::vector<Variant> all;
+  for (ShellKind shell : {ShellKind::cylinder, ShellKind::cone, ShellKind::hybrid}) {
+    const char* name = shell == ShellKind::cylinder ? "cylinder" : shell == ShellKind::cone ? "cone" : "hybrid";
+    all.push_back({std::string("mibit/") + name, {Method::mibit, shell}});
+    all.push_back({std::string("mibit/") + name + "/no range search", {Method::mibit, shell, 0, true, false}});
+  }
+  all.push_back({"mibit/hybrid/4 subdivisions", {Method::mibit, ShellKind::hybrid, 4}});
+  all.push_back({"mibit/hybrid/no monotone split", {Method::mibit, ShellKind::hybrid, 0, false}});
+  all.push_back({"mibit/cone/3 subdivisions, no split", {Method::mibit, ShellKind::cone, 3, false}});
+  all.push_back({"kajiya", {Method::kajiya}});
+  return all;
+}
+
+std::string describe(const Ray& ray) {
+  std::ostringstream out;
+  out.precision(9);
+  out << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
+      << ", " << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tnear << ", " << ray.tfar << "]";
+  return out.str();
+}
+
+std::string describe(const std::optional<Hit>& hit) {
+  if (!hit) return "miss";
+  std::ostringstream out;
+  out.precision(9);
+  out << "t=" << hit->t << " segment " << hit->segment;
+  return out.str();
+}
+
+bool identical(const std::optional<Hit>& a, const std::optional<Hit>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || std::memcmp(&*a, &*b, sizeof(Hit)) == 0;
+}
+
+TEST(MethodAgreementTest, MibitAndKajiyaMatchLinearScanHitForHit) {
+  constexpr std::uint64_t kSeed = 0x5eed0001;
+  std::mt19937_64 random(kSeed);
+  const std::vector<Variant> compared = variants();
+  std::size_t raysTested = 0, hits = 0;
+  const std::vector<testing::NamedProfile> profiles = testing::standardProfiles();
+  ASSERT_GE(profiles.size(), 10u);
+  for (const testing::NamedProfile& named : profiles) {
+    SCOPED_TRACE(named.name + ", seed " + std::to_string(kSeed));
+    const Profile profile(named.points);
+    const Shape linear(profile, {Method::linear});
+    std::vector<Shape> shapes;
+    for (const Variant& variant : compared) shapes.emplace_back(profile, variant.options);
+
+    std::vector<Ray> rays = testing::incoherentRays(linear, random, 70000);
+    const std::vector<Ray> awkward = testing::axisAlignedRays(linear, random, 15000);
+    rays.insert(rays.end(), awkward.begin(), awkward.end());
+    // Some rays start inside the shape, and some stop short of it.
+    for (std::size_t i = 0; i < rays.size(); i += 7) rays[i].tnear = 0.5f;
+    for (std::size_t i = 3; i < rays.size(); i += 11) rays[i].tfar = 1.0f;
+
+    std::vector<std::size_t> mismatches(compared.size(), 0);
+    for (const Ray& ray : rays) {
+      const std::optional<Hit> expected = intersect(linear, ray);
+      hits += expected.has_value();
+      for (std::size_t v = 0; v < shapes.size(); ++v) {
+        const std::optional<Hit> got = intersect(shapes[v], ray);
+        if (identical(expected, got)) continue;
+        if (++mismatches[v] <= 3) {
+          ADD_FAILURE() << compared[v].name << ": " << describe(ray) << ": linear " << describe(expected) << ", got "
+                        << describe(got);
+        }
+        EXPECT_EQ(occluded(shapes[v], ray), expected.has_value()) << compared[v].name << ": " << describe(ray);
+      }
+    }
+    for (std::size_t v = 0; v < shapes.size(); ++v) EXPECT_EQ(mismatches[v], 0u) << compared[v].name;
+    raysTested += rays.size();
+  }
+  EXPECT_GE(raysTested, 1000000u);
+  // The rays must exercise hits and misses alike, or agreement would mean little.
+  EXPECT_GT(hits, raysTested / 4);
+  EXPECT_LT(hits, raysTested * 9 / 10);
+}
+
+TEST(MethodAgreementTest, OccludedAgreesWithIntersect) {
+  std::mt19937_64 random(0x5eed0002);
+  for (const testing::NamedProfile& named : testing::standardProfiles()) {
+    SCOPED_TRACE(named.name);
+    const Profile profile(named.points);
+    for (Method method : {Method::mibit, Method::linear, Method::kajiya}) {
+      const Shape shape(profile, {method});
+      for (const Ray& ray : testing::incoherentRays(shape, random, 3000)) {
+        EXPECT_EQ(occluded(shape, ray), intersect(shape, ray).has_value()) << describe(ray);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace revolve
