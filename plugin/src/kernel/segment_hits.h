@@ -56,13 +56,17 @@ inline void addApexTouch(const MeridianRay& ray, double zApex, double lo, double
   if (cx * cx + cy * cy + cz * cz <= tolerance * tolerance) insertSorted(hits, sApex);
 }
 
-// Inside (rho < cone radius) at s, for an interval end that is not a vertex plane: the ray's origin
-// or its exit from the bounding sphere. Evaluated as the sign of ez * (rho - radius), whose error
-// stays proportional to the segment's length however flat the segment is.
-inline bool insideConeAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez) noexcept {
+// Inside (rho < cone radius) at s, for an interval end that is not a vertex plane: tnear, tfar or
+// the exit from the bounding sphere. Evaluated as the sign of ez * (rho - radius), whose error stays
+// proportional to the segment's length however flat the segment is. `onCounts`: a point exactly on
+// the surface counts as inside, used at the far end so that a root exactly at tfar is a hit
+// (tnear <= t <= tfar is inclusive at both ends; at the near end a root exactly at tnear is found
+// as the entry of the inside it leads to).
+inline bool insideConeAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez, bool onCounts) noexcept {
   const double rho = std::sqrt(ray.rho2At(s));
   const double L = p0.r * ez + (ray.zAt(s) - p0.z) * er;
-  return ez > 0.0 ? ez * rho < L : ez * rho > L;
+  const double outward = ez > 0.0 ? ez * rho - L : L - ez * rho;  // > 0 outside the cone
+  return onCounts ? outward <= 0.0 : outward < 0.0;
 }
 
 }  // namespace segment_hits_internal
@@ -90,8 +94,8 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
     const double rEnter = p0First ? p0.r : p1.r, rLeave = p0First ? p1.r : p0.r;
     const double x0 = std::max(sEnter, lo), x1 = std::min(sLeave, hi);
     if (x0 <= x1) {
-      const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : insideConeAt(ray, x0, p0, er, ez);
-      const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : insideConeAt(ray, x1, p0, er, ez);
+      const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : insideConeAt(ray, x0, p0, er, ez, false);
+      const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : insideConeAt(ray, x1, p0, er, ez, true);
       // Expand g about the middle m of [x0, x1]: g(m + x) = A x^2 + 2 B x + C.
       const double m = 0.5 * (x0 + x1);
       const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
@@ -115,7 +119,7 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
       // a * (rho^2 - radius^2) about the closest approach to the axis: a^2 x^2 + cross^2 - a radius^2.
       const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
       const Roots roots =
-          bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) < R2);
+          bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = ray.sAxis + roots.x[i];
       hits.solved = true;
     }
