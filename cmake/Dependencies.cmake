@@ -1,8 +1,7 @@
 # Third-party packages, all from Debian 12 (scripts/install-deps.sh installs them).
-# The library itself needs only Embree and GLM; the rest serve the applications and tests.
+# The library itself needs only Embree; the rest serve the applications and tests.
 
 find_package(embree 3 REQUIRED)   # imported target `embree` (not embree::embree)
-find_package(glm REQUIRED)        # glm::glm, header-only
 
 if(REVOLVE_BUILD_DEMOS OR REVOLVE_BUILD_TESTS OR REVOLVE_BUILD_BENCH OR REVOLVE_FUZZ)
   find_package(CLI11 REQUIRED)

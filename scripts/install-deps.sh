@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libembree-dev libtbb-dev libglm-dev libcli11-dev
+  libembree-dev libtbb-dev libcli11-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(libgtest-dev libbenchmark-dev)
