@@ -116,6 +116,40 @@ TEST(ProfileTest, MoreThanTheIndexTypesHoldIsRejected) {
   munmap(memory, bytes);
 }
 
+TEST(ProfileTest, CoordinatesBeyond2To60AreRejected) {
+  // Found by fuzzing: beyond about 1e50 the kernel's products overflow (and Embree drops boxes
+  // beyond 1.8e18 anyway).
+  const ProfileError error = rejected({{0, 0}, {1, 0}, {1.7976931348623157e308, 0.13}, {0, 1}});
+  EXPECT_EQ(error.rule(), Rule::outOfRange);
+  EXPECT_EQ(error.index(), 2u);
+  EXPECT_TRUE(contains(error.what(), "profile point 2 (r = 1.7976931348623157e+308, z = 0.13)")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "2^60")) << error.what();
+  EXPECT_EQ(rejected({{0, 0}, {1, -0x1.0000000000001p60}}).rule(), Rule::outOfRange);
+  EXPECT_NO_THROW(Profile(std::vector<Point2>{{0, -0x1p60}, {0x1p60, 0x1p60}}));  // the limit itself is allowed
+}
+
+TEST(ProfileTest, ProfilesSmallerThan2ToMinus60AreRejected) {
+  // Found by fuzzing: a profile of subnormal size gave NaN normals.
+  const ProfileError error = rejected({{0, 0}, {1.265e-321, 0}, {1.265e-321, 1.265e-321}, {0, 2.53e-321}});
+  EXPECT_EQ(error.rule(), Rule::outOfRange);
+  EXPECT_TRUE(contains(error.what(), "extent")) << error.what();
+  EXPECT_NO_THROW(Profile(std::vector<Point2>{{0, 0}, {0x1p-60, 0}}));
+}
+
+TEST(ProfileTest, SegmentsBelow2ToMinus60OfTheExtentAreRejected) {
+  // Found by fuzzing: a segment of length 1e-317 in an ordinary profile (its squared length
+  // underflows) gave a NaN normal.
+  const ProfileError error = rejected({{0, 0}, {1, 0}, {1, 1e-317}, {1, 1}});
+  EXPECT_EQ(error.rule(), Rule::segmentTooShort);
+  EXPECT_EQ(error.index(), 1u);
+  EXPECT_TRUE(contains(error.what(), "point 1 (r = 1, z = 0)")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "point 2 (r = 1, z = 1e-317)")) << error.what();
+  EXPECT_TRUE(contains(error.what(), "merge the points")) << error.what();
+  // 2^-60 of the extent exactly is allowed; a near-duplicate at 1e-9 is nowhere near the limit.
+  EXPECT_NO_THROW(Profile(std::vector<Point2>{{0, 0}, {1, 0}, {1, 0x1p-60}, {1, 1}}));
+  EXPECT_NO_THROW(Profile(std::vector<Point2>{{0, 0}, {1, 0}, {1, 1e-9}, {1, 1}}));
+}
+
 TEST(ProfileTest, AwkwardButValidProfilesAreAccepted) {
   // Horizontal and vertical runs, apexes on the axis, not monotone in z, a closed loop.
   const std::vector<std::vector<Point2>> valid = {

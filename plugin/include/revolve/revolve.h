@@ -46,7 +46,15 @@ struct Vec3 {
 // Thrown for an invalid profile. what() names the point, the value and the rule it breaks.
 class ProfileError : public std::invalid_argument {
  public:
-  enum class Rule { tooFewPoints, nonFinite, negativeRadius, selfIntersecting, tooManyPoints };
+  enum class Rule {
+    tooFewPoints,
+    nonFinite,
+    negativeRadius,
+    selfIntersecting,
+    tooManyPoints,
+    outOfRange,       // a coordinate beyond kMaxCoordinate, or an extent below kMinExtent
+    segmentTooShort,  // a segment shorter than kMinSegmentFraction of the profile's extent
+  };
   ProfileError(Rule rule, std::size_t index, const std::string& message)
       : std::invalid_argument(message), rule_(rule), index_(index) {}
   Rule rule() const noexcept { return rule_; }
@@ -67,11 +75,19 @@ class Profile {
  public:
   // Largest accepted point count: tree node indices are 32-bit and a tree has up to 2 nodes a point.
   static constexpr std::size_t kMaxPoints = std::size_t{1} << 31;
+  // The range the kernel and Embree support. Embree drops boxes beyond 1.8e18 (its single-precision
+  // bounds); within [2^-60, 2^60] for the extent and 2^-60 of it for a segment, every product the
+  // kernel forms (up to the sixth power of the size, down to squared segment lengths) stays well
+  // inside double's range.
+  static constexpr double kMaxCoordinate = 0x1p60;       // |r|, |z| <= 2^60 (about 1.15e18)
+  static constexpr double kMinExtent = 0x1p-60;          // largest |r| or |z| >= 2^-60 (about 8.7e-19)
+  static constexpr double kMinSegmentFraction = 0x1p-60;  // segment length >= 2^-60 of that extent
 
   // Validates `points` and keeps them in order. Throws ProfileError for: fewer than 2 distinct
-  // points; a non-finite coordinate; r < 0; a self-intersecting polyline (two segments sharing a
-  // point other than the vertex joining neighbours, or the closing point of a loop); more than
-  // kMaxPoints points. Exactly repeated consecutive points are dropped and listed in warnings().
+  // points; a non-finite coordinate; r < 0; a coordinate beyond kMaxCoordinate or a profile whose
+  // extent is below kMinExtent; a segment shorter than kMinSegmentFraction of the extent; a
+  // self-intersecting polyline (two segments sharing a point other than the vertex joining
+  // neighbours, or the closing point of a loop); more than kMaxPoints points. Exactly repeated consecutive points are dropped and listed in warnings().
   // Horizontal segments (discs, annuli), vertical ones (cylinders), points on the axis (apexes)
   // and profiles that are not monotone in z are all valid.
   explicit Profile(std::span<const Point2> points);
@@ -87,6 +103,8 @@ class Profile {
   const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
 
  private:
+  void checkScale() const;
+
   std::vector<Point2> points_;
   std::vector<double> arcLength_;
   std::vector<std::size_t> sourceIndex_;

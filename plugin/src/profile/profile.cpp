@@ -5,6 +5,7 @@
 #include "profile/self_intersection.h"
 #include "util/format.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace revolve {
@@ -25,11 +26,40 @@ void checkPoint(std::size_t index, Point2 p) {
     throw ProfileError(ProfileError::Rule::negativeRadius, index,
                        describePoint(index, p) + ": r must be >= 0 (r is the distance from the z axis)");
   }
+  if (std::abs(p.r) > Profile::kMaxCoordinate || std::abs(p.z) > Profile::kMaxCoordinate) {
+    throw ProfileError(ProfileError::Rule::outOfRange, index,
+                       describePoint(index, p) + ": coordinates must be within +-2^60 (" +
+                           formatNumber(Profile::kMaxCoordinate) +
+                           "); Embree's single-precision bounds and the kernel's products support no more");
+  }
 }
 
 bool samePoint(Point2 a, Point2 b) { return a.r == b.r && a.z == b.z; }
 
 }  // namespace
+
+// The profile's extent (largest coordinate magnitude) and every segment's length must stay within
+// the range the kernel resolves (see Profile::kMinExtent, kMinSegmentFraction).
+void Profile::checkScale() const {
+  double extent = 0.0;
+  for (const Point2& p : points_) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
+  if (extent < kMinExtent) {
+    throw ProfileError(ProfileError::Rule::outOfRange, sourceIndex_[0],
+                       "profile extent " + formatNumber(extent) + " (its largest coordinate) is below 2^-60 (" +
+                           formatNumber(kMinExtent) + "), too small for the kernel's products");
+  }
+  const double shortest = extent * kMinSegmentFraction;
+  for (std::size_t k = 0; k + 1 < points_.size(); ++k) {
+    const double length = std::hypot(points_[k + 1].r - points_[k].r, points_[k + 1].z - points_[k].z);
+    if (length < shortest) {
+      throw ProfileError(ProfileError::Rule::segmentTooShort, sourceIndex_[k],
+                         "the segment from " + describePoint(sourceIndex_[k], points_[k]) + " to " +
+                             describePoint(sourceIndex_[k + 1], points_[k + 1]) + " has length " +
+                             formatNumber(length) + ", below 2^-60 of the profile's extent " + formatNumber(extent) +
+                             " (" + formatNumber(shortest) + "), which the kernel cannot resolve; merge the points");
+    }
+  }
+}
 
 Profile::Profile(std::span<const Point2> input) {
   if (input.size() > kMaxPoints) {
@@ -54,6 +84,8 @@ Profile::Profile(std::span<const Point2> input) {
                        "profile has " + std::to_string(points_.size()) +
                            " distinct point(s); at least 2 are needed to form a segment");
   }
+
+  checkScale();
 
   if (auto pair = detail::findSelfIntersection(points_)) {
     const auto describeSegment = [&](std::size_t k) {
