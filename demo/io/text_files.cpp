@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -37,13 +39,23 @@ std::string quote(std::string_view text) {
   return out + (text.size() > 40 ? "...\"" : "\"");
 }
 
-// A whole field as a number of type T (float: rounded once from the decimal text).
+// A whole field as a number of type T, rounded once from its decimal text. A value beyond T's range
+// rounds as IEEE says, to +-inf or (gradually) to zero: from_chars reports those as out of range
+// without a value, so they are re-read with strtof / strtod, which round them correctly (the
+// tools never change the C locale, so the decimal point is '.').
 template <class T>
 std::optional<T> parseNumber(std::string_view field) {
   if (field.size() > 1 && field.front() == '+' && field[1] != '-' && field[1] != '+') field.remove_prefix(1);
+  if (field.empty()) return std::nullopt;
   T value{};
   const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (error != std::errc() || end != field.data() + field.size() || field.empty()) return std::nullopt;
+  if (end != field.data() + field.size()) return std::nullopt;
+  if (error == std::errc::result_out_of_range) {
+    const std::string text(field);
+    if constexpr (std::is_same_v<T, float>) return std::strtof(text.c_str(), nullptr);
+    else return std::strtod(text.c_str(), nullptr);
+  }
+  if (error != std::errc()) return std::nullopt;
   return value;
 }
 
@@ -97,6 +109,9 @@ InputError::InputError(std::string_view file, std::size_t line, const std::strin
     : std::runtime_error(std::string(file) + ":" + std::to_string(line) + ": " + problem) {}
 
 std::string readTextFile(const std::string& path) {
+  // A directory opens like a file and reads as empty; say what it is instead.
+  std::error_code code;
+  if (std::filesystem::is_directory(path, code)) throw InputError(path, 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream contents;

@@ -33,7 +33,8 @@ ProfileFile parseProfileCsv(std::string_view text, std::string_view file);
 ProfileFile readProfileCsv(const std::string& path);
 
 // Rays CSV: an optional header `ox,oy,oz,dx,dy,dz,tnear,tfar`, then one ray per line, read as
-// 32-bit floats (each field rounded once, from its decimal text). Every value must be finite
+// 32-bit floats (each field rounded once, from its decimal text; beyond float's range that gives
+// +-inf or, gradually, zero). Every value must be finite
 // except tfar, which may be inf; the direction must be non-zero, and 0 <= tnear <= tfar.
 std::vector<Ray> parseRaysCsv(std::string_view text, std::string_view file);
 std::vector<Ray> readRaysCsv(const std::string& path);

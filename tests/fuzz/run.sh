@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (ASan + UBSan) and fuzzes each for a while.
+#
+# Usage: tests/fuzz/run.sh <seconds-per-target> [build-dir]   (build-dir defaults to build-fuzz/)
+#
+# Each target starts from a scratch copy of its committed seed corpus (corpus/<target>), so runs
+# never grow the committed corpus. Exits non-zero if any target finds a crash, a sanitizer report,
+# a broken check, a timeout or an out-of-memory; the input is saved as
+# <build-dir>/fuzz-artifacts/<target>/crash-* (or timeout-*, oom-*) and the log beside it.
+set -euo pipefail
+
+if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ ]]; then
+  echo "usage: $0 <seconds-per-target> [build-dir]" >&2
+  exit 2
+fi
+seconds=$1
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+build=$(realpath -m "${2:-$root/build-fuzz}")
+
+cmake -S "$root" -B "$build" -G Ninja \
+  -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_DEMOS=ON
+cmake --build "$build" --target fuzz_profile_csv fuzz_rays_csv fuzz_profile_points
+# Regressions first: every seed and every saved finding, once each.
+ctest --test-dir "$build" --output-on-failure
+if [[ $seconds -eq 0 ]]; then  # build and replay only (libFuzzer reads -max_total_time=0 as "no limit")
+  exit 0
+fi
+
+# Input caps: a profile CSV line is at least 4 bytes ("1,2\n"), so 2048 bytes is at most ~500
+# points (and 128 raw double points); rays are parsed only. Any input taking over 10 s or 2 GB is
+# itself a finding (the work per input is O(n log n) in the points).
+declare -A max_len=([fuzz_profile_csv]=2048 [fuzz_rays_csv]=4096 [fuzz_profile_points]=2048)
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=0:detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+failed=()
+for target in fuzz_profile_csv fuzz_rays_csv fuzz_profile_points; do
+  corpus="$scratch/$target"
+  mkdir -p "$corpus"
+  cp "$here/corpus/$target/"* "$corpus/"
+  artifacts="$build/fuzz-artifacts/$target"
+  mkdir -p "$artifacts"
+  dictionary=()
+  [[ -f "$here/$target.dict" ]] && dictionary=(-dict="$here/$target.dict")
+  echo "== $target: ${seconds}s, max_len ${max_len[$target]}"
+  if ! "$build/bin/$target" "$corpus" "${dictionary[@]}" \
+      -max_total_time="$seconds" -max_len="${max_len[$target]}" -timeout=10 -rss_limit_mb=2048 \
+      -artifact_prefix="$artifacts/" -print_final_stats=1 2> "$artifacts/log.txt"; then
+    failed+=("$target")
+    echo "!! $target failed; last lines of $artifacts/log.txt:"
+    tail -n 40 "$artifacts/log.txt"
+  else
+    grep -E "DONE +cov:|^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)" "$artifacts/log.txt" || true
+  fi
+done
+
+if [[ ${#failed[@]} -gt 0 ]]; then
+  echo "findings in: ${failed[*]} (inputs under $build/fuzz-artifacts/)" >&2
+  exit 1
+fi
+echo "no findings"
