@@ -1,5 +1,5 @@
 // Throughput of MIBIT against Wang's linear scan through Embree: rtcIntersect1, one thread,
-// incoherent rays, a vase profile sampled at 16 to 16384 points. Both methods trace the same
+// incoherent rays, a vase profile sampled at 16 to 16384 points; and MIBIT by shell kind. Both methods trace the same
 // rays in the same run (Google Benchmark, repetitions randomly interleaved, medians reported),
 // and each method's error is printed beside its speed: the largest meridian residual of its hit
 // points (distance from the exact profile, in float ulps of the object's radius) and its hit count.
@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <tuple>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -90,14 +91,14 @@ RTCRayHit rayHit(const Ray& ray) {
   return rh;
 }
 
-Scene& sceneFor(Method method, int points) {
+Scene& sceneFor(const BuildOptions& options, int points) {
   static RTCDevice device = rtcNewDevice("threads=1");
-  static std::map<std::pair<int, int>, std::unique_ptr<Scene>> scenes;
-  std::unique_ptr<Scene>& scene = scenes[{int(method), points}];
+  static std::map<std::tuple<int, int, int>, std::unique_ptr<Scene>> scenes;
+  std::unique_ptr<Scene>& scene = scenes[{int(options.method), int(options.shell), points}];
   if (scene) return *scene;
   scene = std::make_unique<Scene>();
   scene->device = device;
-  scene->shape = std::make_unique<Shape>(Profile(vase(points)), BuildOptions{method});
+  scene->shape = std::make_unique<Shape>(Profile(vase(points)), options);
   scene->geometry = std::make_unique<Geometry>(device, *scene->shape);
   scene->scene = rtcNewScene(device);
   rtcAttachGeometry(scene->scene, scene->geometry->handle());
@@ -120,8 +121,8 @@ Scene& sceneFor(Method method, int points) {
   return *scene;
 }
 
-void traceRays(benchmark::State& state, Method method) {
-  Scene& scene = sceneFor(method, int(state.range(0)));
+void traceRays(benchmark::State& state, const BuildOptions& options) {
+  Scene& scene = sceneFor(options, int(state.range(0)));
   for (auto _ : state) {
     for (const Ray& ray : scene.rays) {
       RTCIntersectContext context;
@@ -137,9 +138,16 @@ void traceRays(benchmark::State& state, Method method) {
   state.counters["residual_ulps"] = scene.maxResidualUlps;
 }
 
+// "mibit" is the default (cylinder shells); the paper's cone and hybrid shells are measured too.
 void registerBenchmarks() {
-  for (const auto& [name, method] : {std::pair{"mibit", Method::mibit}, std::pair{"linear", Method::linear}}) {
-    auto* b = benchmark::RegisterBenchmark(name, [method = method](benchmark::State& state) { traceRays(state, method); });
+  const std::pair<const char*, BuildOptions> runs[] = {
+      {"mibit", {Method::mibit, ShellKind::cylinder}},
+      {"linear", {Method::linear}},
+      {"mibit_cone", {Method::mibit, ShellKind::cone}},
+      {"mibit_hybrid", {Method::mibit, ShellKind::hybrid}},
+  };
+  for (const auto& [name, options] : runs) {
+    auto* b = benchmark::RegisterBenchmark(name, [options = options](benchmark::State& state) { traceRays(state, options); });
     for (int points : kPointCounts) b->Arg(points);
     b->Unit(benchmark::kMillisecond)->MinTime(0.3);
   }
@@ -159,6 +167,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
+    const auto value = [](const Run& run, const char* counter) { return double(run.counters.at(counter)); };
     std::printf("\nrtcIntersect1, 1 thread, %zu incoherent rays, medians:\n", gRayCount);
     std::printf("%8s | %12s %8s %9s | %12s %8s %9s | %8s | %10s\n", "points", "MIBIT Mray/s", "hits", "resid ulp",
                 "linear Mray/s", "hits", "resid ulp", "speedup", "vs 16 pts");
@@ -166,12 +175,23 @@ class RatioReporter : public benchmark::ConsoleReporter {
     for (int points : kPointCounts) {
       const auto mibit = medians_.find({"mibit", points}), linear = medians_.find({"linear", points});
       if (mibit == medians_.end() || linear == medians_.end()) continue;
-      const auto value = [](const Run& run, const char* counter) { return double(run.counters.at(counter)); };
       const double m = value(mibit->second, "Mrays/s"), l = value(linear->second, "Mrays/s");
       if (points == kPointCounts.front()) base = m;
       std::printf("%8d | %12.2f %8.0f %9.2f | %12.3f %8.0f %9.2f | %7.1fx | %9.2f\n", points, m,
                   value(mibit->second, "hits"), value(mibit->second, "residual_ulps"), l, value(linear->second, "hits"),
                   value(linear->second, "residual_ulps"), m / l, base > 0 ? m / base : 0.0);
+    }
+    std::printf("\nMIBIT by shell kind (Mrays/s, medians; hits and residuals as above in every column):\n");
+    std::printf("%8s | %9s %9s %9s\n", "points", "cylinder", "cone", "hybrid");
+    for (int points : kPointCounts) {
+      const auto cy = medians_.find({"mibit", points}), tc = medians_.find({"mibit_cone", points}),
+                 hy = medians_.find({"mibit_hybrid", points});
+      if (cy == medians_.end() || tc == medians_.end() || hy == medians_.end()) continue;
+      std::printf("%8d | %9.2f %9.2f %9.2f\n", points, value(cy->second, "Mrays/s"), value(tc->second, "Mrays/s"),
+                  value(hy->second, "Mrays/s"));
+      if (value(tc->second, "hits") != value(cy->second, "hits") || value(hy->second, "hits") != value(cy->second, "hits")) {
+        std::printf("         ! hit counts differ between shell kinds\n");
+      }
     }
   }
 

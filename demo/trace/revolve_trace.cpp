@@ -23,7 +23,7 @@ using namespace revolve;
 
 struct Options {
   std::string profile, rays, out;
-  std::string method = "mibit", shell = "hybrid";
+  std::string method = "mibit", shell = "cylinder";
   std::uint32_t subdivisions = 0;
   std::uint32_t slices = 64;
 };
