@@ -102,6 +102,38 @@ TEST(HardCasesTest, RaysThroughAnApexHitIt) {
   }
 }
 
+TEST(HardCasesTest, NearlyHorizontalRaysGrazingAnApexStayOnTheSurface) {
+  // A solid cone with its apex at the top (0, 0, 0); rays nearly parallel to the apex plane
+  // (|dz| ~ 1e-13..1e-9) passing within ~2e-15 of the apex. A touch must be placed where the ray
+  // is nearest the apex, not where it crosses the apex's plane (up to 1e-12 / dz away along the
+  // ray): every reported hit lies on the surface.
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), exponent(-13.0, -9.0);
+  for (const Variant& variant : kVariants) {
+    const std::vector<Point2> points{{0.0, -1.0}, {1.0, -1.0}, {0.0, 0.0}};
+    const Shape shape(Profile(points), variant.options);
+    std::size_t fired = 0, wrong = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const float dz = float(std::pow(10.0, exponent(random)) * (u(random) < 0 ? -1 : 1));
+      // Within the touch tolerance (a few u of the origin's distance, ~2e-15), so touches happen.
+      const float height = float(2e-15 * u(random));
+      const float sideways = float(2e-15 * u(random));
+      const Ray ray{{-3.0f, sideways, height - 3.0f * dz}, {1.0f, 0.0f, dz}};
+      ++fired;
+      const std::optional<Hit> hit = intersect(shape, ray);
+      if (!hit) continue;
+      const double x = ray.origin.x + double(hit->t) * ray.direction.x, y = ray.origin.y + double(hit->t) * ray.direction.y,
+                   z = ray.origin.z + double(hit->t) * ray.direction.z;
+      const double residual = double(reference::meridianDistance(points, x, y, z));
+      if (residual > 8 * kFloatRoundoff * 3.0 && ++wrong <= 3) {
+        ADD_FAILURE() << "dz " << dz << ": hit at t " << hit->t << " lies " << residual << " off the surface";
+      }
+    }
+    report("apex: nearly horizontal rays grazing it stay on the surface", variant.name, fired, wrong);
+    EXPECT_EQ(wrong, 0u);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Rays along, through and perpendicular to the axis; horizontal and vertical runs.
 

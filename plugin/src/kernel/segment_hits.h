@@ -17,7 +17,8 @@
 //
 // Accuracy. The quadratic is expanded about the middle of the ray's stretch in the slab, so its
 // coefficients are of the size of the segment's neighbourhood (not of distances to the ray's
-// origin): a nearly horizontal segment keeps its roots well conditioned.
+// origin): a nearly horizontal segment keeps its roots well conditioned. When the discriminant is
+// lost to cancellation (near tangency), g is expanded again about its extremum, where the roots are.
 #pragma once
 
 #include "kernel/bracketed_roots.h"
@@ -29,31 +30,26 @@ namespace revolve::detail {
 
 struct SegmentHits {
   int count = 0;
-  double s[3];         // increasing
+  double s[2];         // increasing
   bool solved = false;  // whether a quadratic was set up (the ray met the segment's slab)
 };
 
 namespace segment_hits_internal {
 
-inline void insertSorted(SegmentHits& hits, double s) noexcept {
-  int i = hits.count++;
-  for (; i > 0 && hits.s[i - 1] > s; --i) hits.s[i] = hits.s[i - 1];
-  hits.s[i] = s;
-}
-
 // A ray through an apex (a vertex on the axis) touches the surface there even when it is outside
-// on both sides (a double root that rounding may turn either way). Count it as a hit when the
-// ray's line passes within lineSlack (its distance from the caller's float ray) plus the rounding
-// of this test (4 u R) of the apex point.
-inline void addApexTouch(const MeridianRay& ray, double zApex, double lo, double hi, SegmentHits& hits) noexcept {
+// on both sides: a double root that rounding may turn either way, so the sign brackets cannot be
+// relied on to see it. Count it as a hit when the point of [sLow, sHigh] (the segment's bracket)
+// nearest the apex lies within lineSlack (the line's distance from the caller's float ray) plus
+// this test's own rounding (4 u R) of the apex. Only called when the brackets found no root: a ray
+// that enters the cone through its apex has its root there already.
+inline void addApexTouch(const MeridianRay& ray, double zApex, double sLow, double sHigh, SegmentHits& hits) noexcept {
   const double ax = -ray.ox, ay = -ray.oy, az = zApex - ray.oz;  // apex - origin
-  // Placed on the apex's plane crossing, the very value the tree's slabs and the neighbouring
-  // segment use, so that every method sees the touch at the same s.
-  const double sApex = ray.inPlane ? ax * ray.dx + ay * ray.dy : ray.planeS(zApex);
-  if (!(sApex >= lo && sApex <= hi)) return;
-  const double cx = ay * ray.dz - az * ray.dy, cy = az * ray.dx - ax * ray.dz, cz = ax * ray.dy - ay * ray.dx;
+  // The closest approach, clamped into the bracket: within the segment's slab, so the touch lies
+  // after the entry of every tree node holding the segment, as the searches' pruning assumes.
+  const double s = std::clamp(ax * ray.dx + ay * ray.dy + az * ray.dz, sLow, sHigh);
+  const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s) - zApex;
   const double tolerance = ray.lineSlack + 4.0 * kUnitRoundoff * (std::abs(ax) + std::abs(ay) + std::abs(az));
-  if (cx * cx + cy * cy + cz * cz <= tolerance * tolerance) insertSorted(hits, sApex);
+  if (px * px + py * py + pz * pz <= tolerance * tolerance) hits.s[hits.count++] = s;
 }
 
 // Inside (rho < cone radius) at s, for an interval end that is not a vertex plane: tnear, tfar or
@@ -78,6 +74,7 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
   if (p0.r == 0.0 && p1.r == 0.0) return hits;  // a segment on the axis sweeps no area
   const double er = p1.r - p0.r, ez = p1.z - p0.z;
 
+  double bracketLow = 0.0, bracketHigh = -1.0;  // the ray's stretch this segment owns; empty if none
   if (!ray.inPlane) {
     const double s0 = ray.planeS(p0.z);
     if (ez == 0.0) {
@@ -92,26 +89,43 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
     const bool p0First = s0 <= s1;
     const double sEnter = p0First ? s0 : s1, sLeave = p0First ? s1 : s0;
     const double rEnter = p0First ? p0.r : p1.r, rLeave = p0First ? p1.r : p0.r;
-    const double x0 = std::max(sEnter, lo), x1 = std::min(sLeave, hi);
-    if (x0 <= x1) {
+    bracketLow = std::max(sEnter, lo);
+    bracketHigh = std::min(sLeave, hi);
+    if (bracketLow <= bracketHigh) {
+      const double x0 = bracketLow, x1 = bracketHigh;
       const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : insideConeAt(ray, x0, p0, er, ez, false);
       const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : insideConeAt(ray, x1, p0, er, ez, true);
       // Expand g about the middle m of [x0, x1]: g(m + x) = A x^2 + 2 B x + C.
-      const double m = 0.5 * (x0 + x1);
-      const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
-      const double bm = px * ray.dx + py * ray.dy;
-      const double cm = px * px + py * py;
-      const double Lm = p0.r * ez + (ray.zAt(m) - p0.z) * er;
-      const double ez2 = ez * ez;
-      const Quadratic g{ez2 * ray.a - er * er * ray.dz * ray.dz, ez2 * bm - er * ray.dz * Lm, ez2 * cm - Lm * Lm};
+      const auto expandAbout = [&](double m) {
+        const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
+        const double bm = px * ray.dx + py * ray.dy;
+        const double cm = px * px + py * py;
+        const double Lm = p0.r * ez + (ray.zAt(m) - p0.z) * er;
+        const double ez2 = ez * ez;
+        return Quadratic{ez2 * ray.a - er * er * ray.dz * ray.dz, ez2 * bm - er * ray.dz * Lm, ez2 * cm - Lm * Lm};
+      };
+      double m = 0.5 * (x0 + x1);
+      Quadratic g = expandAbout(m);
+      // A near-tangent ray (or one through a sliver of the cone near its apex) has a discriminant
+      // lost to cancellation: the roots sit near g's extremum, far from m, below the rounding of
+      // coefficients taken at m. Expanding again about the extremum measures g there with local
+      // magnitudes. Always valid (the end signs, hence the parity, do not change); worth its cost
+      // only when D has lost at least 20 bits, |D| < 2^-20 (B^2 + |A C|).
+      if (g.A != 0.0 && std::abs(g.B * g.B - g.A * g.C) < 0x1p-20 * (g.B * g.B + std::abs(g.A * g.C))) {
+        m = std::clamp(m - g.B / g.A, x0, x1);
+        g = expandAbout(m);
+      }
       const Roots roots = bracketedRoots(g, x0 - m, x1 - m, inside0, inside1);
-      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = m + roots.x[i];
+      // Clamped again after adding m back, which rounds: a root must not leave its segment's stretch.
+      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(m + roots.x[i], x0, x1);
       hits.solved = true;
     }
   } else {
     // The ray stays in the plane z = oz, where the cone is a circle. A segment owns the heights
     // [zmin, zmax) — half-open, so that a vertex height belongs to exactly the segments that
     // continue upwards from it, and the circles seen at any height are the true cross-section.
+    bracketLow = lo;
+    bracketHigh = hi;
     const double zMin = std::min(p0.z, p1.z), zMax = std::max(p0.z, p1.z);
     if (ez != 0.0 && zMin <= ray.oz && ray.oz < zMax) {
       const double radius = ray.oz == p0.z ? p0.r : ray.oz == p1.z ? p1.r : p0.r + (ray.oz - p0.z) * (er / ez);
@@ -120,14 +134,14 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
       const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
       const Roots roots =
           bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
-      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = ray.sAxis + roots.x[i];
+      for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(ray.sAxis + roots.x[i], lo, hi);
       hits.solved = true;
     }
   }
 
-  if (ez != 0.0) {
-    if (p0.r == 0.0) addApexTouch(ray, p0.z, lo, hi, hits);
-    if (p1.r == 0.0) addApexTouch(ray, p1.z, lo, hi, hits);
+  if (ez != 0.0 && hits.count == 0 && bracketLow <= bracketHigh) {
+    if (p0.r == 0.0) addApexTouch(ray, p0.z, bracketLow, bracketHigh, hits);
+    if (p1.r == 0.0 && hits.count == 0) addApexTouch(ray, p1.z, bracketLow, bracketHigh, hits);
   }
   return hits;
 }
