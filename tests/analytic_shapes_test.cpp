@@ -233,5 +233,32 @@ TEST(AnalyticShapesTest, TorusLikePolylineLiesBetweenTwoTori) {
       [&](const RefRay& ray) { return reference::intersectTorus(1, 0.35L - sagitta - slack, ray); }, 7);
 }
 
+TEST(ClosestPointTest, MatchesTheOraclesMeridianDistanceAndLiesOnTheSurface) {
+  // The closest point of every standard profile's surface to random points, against the oracle's
+  // long-double distance; the point returned must itself lie on the surface, at that distance.
+  std::mt19937_64 random(8);
+  for (const testing::NamedProfile& named : testing::standardProfiles()) {
+    SCOPED_TRACE(named.name);
+    const Shape shape{Profile(named.points)};
+    const Bounds box = shape.bounds();
+    std::uniform_real_distribution<float> x(-2 * box.upper.x, 2 * box.upper.x), z(2 * box.lower.z, 2 * box.upper.z);
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3 p{x(random), x(random), z(random)};
+      const SurfacePoint closest = closestPoint(shape, p);
+      const double expected = double(reference::meridianDistance(named.points, p.x, p.y, p.z));
+      const double size = length(box.upper);
+      // Computed in double, rounded to float: a few float ulps of the size.
+      EXPECT_NEAR(closest.distance, expected, 4 * 0x1p-24 * (expected + size));
+      EXPECT_NEAR(double(reference::meridianDistance(named.points, closest.point.x, closest.point.y, closest.point.z)), 0.0,
+                  4 * 0x1p-24 * size);
+      EXPECT_NEAR(length({closest.point.x - p.x, closest.point.y - p.y, closest.point.z - p.z}), expected,
+                  4 * 0x1p-24 * (expected + size));
+    }
+  }
+  const Shape shape{Profile(testing::cup())};
+  EXPECT_TRUE(std::isnan(closestPoint(shape, {NAN, 0, 0}).distance));
+  EXPECT_TRUE(std::isnan(closestPoint(shape, {0, INFINITY, 0}).distance));
+}
+
 }  // namespace
 }  // namespace revolve

@@ -1,5 +1,6 @@
 // The queries that need no Embree: nearest hit, any hit, closest point.
 #include "shape_search.h"
+#include "queries.h"
 #include "surface_hit.h"
 
 #include <cmath>
@@ -139,9 +140,13 @@ bool occluded(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
   return anyHit<false>(shape.impl(), ray, unused);
 }
 
-SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept {
-  const Shape::Impl& impl = shape.impl();
+namespace detail {
+
+SurfacePoint closestSurfacePoint(const Shape::Impl& impl, Vec3 p) noexcept {
   const double px = p.x, py = p.y, z = double(p.z) - impl.frame.zCentre;
+  if (!(std::abs(px) < HUGE_VAL && std::abs(py) < HUGE_VAL && std::abs(z) < HUGE_VAL)) {
+    return {p, std::numeric_limits<float>::quiet_NaN(), 0};  // no point is closest to a non-finite one
+  }
   const double rho = std::sqrt(px * px + py * py);
   ClosestSegment closest(impl, rho, z);
   closest.search();
@@ -151,5 +156,9 @@ SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept {
   return {{float(q.r * cosPhi), float(q.r * sinPhi), float(q.z + impl.frame.zCentre)},
           float(std::sqrt(closest.distance2())), closest.segment()};
 }
+
+}  // namespace detail
+
+SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept { return detail::closestSurfacePoint(shape.impl(), p); }
 
 }  // namespace revolve

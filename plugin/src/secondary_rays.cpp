@@ -25,10 +25,12 @@ Vec3 offsetRayOrigin(const Ray& ray, float t, Vec3 normal, Vec3 newDirection) no
   const double nLength = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 
   // p = o + t d in float. Per axis its error against the true hit is at most
-  //   u (|o| + 2 |t d|)  from the multiply and add, plus
-  //   (u + 2^-26) |t d|  from t itself: rounded to float from a double solution whose error stays
-  //                      below 2^-26 relative even at tangency (half of double's 53 bits);
-  // so 2 u (|o| + 4 |t d|) bounds it with room.
+  //   u (|o| + 2 |t d|)  from the float multiply and add, plus
+  //   u |t d|            from t itself, the float rounding of the kernel's double solution.
+  // That solution is accurate to far below a float ulp, except near tangency, where its error (up
+  // to ~2^-26 of the object's size) lies along the ray, that is along the tangent plane: it moves
+  // p along the surface, not off it, and does not count towards the offset along the normal.
+  // 2 u (|o| + 4 |t d|) bounds the sum with room.
   float p[3];
   double error[3];
   for (int i = 0; i < 3; ++i) {

@@ -161,7 +161,9 @@ class Shape {
 
   const Profile& profile() const noexcept;
   const BuildOptions& options() const noexcept;
-  // Object-space box, padded so that Embree's single-precision box tests never cull a hit.
+  // Object-space box, padded by 2^-12 of its largest coordinate so that Embree's single-precision
+  // box test does not cull hits where the surface touches it, for rays starting up to ~10^5 times
+  // that coordinate away (measured; farther, rays that graze the box's edges may lose such hits).
   Bounds bounds() const noexcept;
   std::size_t treeNodeCount() const noexcept;  // nodes of the search structure in use
   std::size_t memoryBytes() const noexcept;    // heap bytes held by the shape
@@ -202,7 +204,8 @@ struct SurfacePoint {
   float distance;
   std::uint32_t segment;
 };
-// Exact closest point of the surface to p (the 2-D closest point in p's meridian plane).
+// Exact closest point of the surface to p (the 2-D closest point in p's meridian plane). p must be
+// finite; otherwise the distance is NaN.
 SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept;
 
 // ---------------------------------------------------------------------------------------------
@@ -221,7 +224,7 @@ Vec3 offsetRayOrigin(const Ray& ray, float t, Vec3 normal, Vec3 newDirection) no
 // An Embree user geometry that traces a Shape: bounds, intersect and occluded callbacks for
 // packets of 1, 4, 8 and 16 rays, filter functions, instancing and point queries. Create it,
 // attach handle() to a scene (rtcAttachGeometry), and keep both the Geometry and the Shape alive
-// while any scene holding the geometry is used. One Shape may back any number of Geometries, and
+// while any scene holding the geometry is used (moving the Shape is fine; destroying it is not). One Shape may back any number of Geometries, and
 // a scene holding a Geometry may be instanced any number of times (one instance level).
 class Geometry {
  public:
@@ -235,7 +238,6 @@ class Geometry {
   Geometry& operator=(const Geometry&) = delete;
 
   RTCGeometry handle() const noexcept { return geometry_; }
-  const Shape& shape() const noexcept;
 
   // Set Embree filter functions through these (not rtcSetGeometry*FilterFunction directly): the
   // callbacks call rtcFilterIntersection / rtcFilterOcclusion only when a filter is set, here or
@@ -271,7 +273,9 @@ std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance
 // on the exact circles), committed and ready to attach: the tessellated baseline. Throws
 // std::invalid_argument when slices < 3 or the triangle count exceeds 32-bit indices.
 RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std::uint32_t slices);
-// Hausdorff distance between that mesh and the exact surface: r_max * (1 - cos(pi / slices)).
+// A bound on the Hausdorff distance between that mesh and the exact surface: r_max (1 - cos(pi /
+// slices)), the gap between a circle and its inscribed polygon at the largest radius; exact when
+// that radius lies on a vertical segment (elsewhere the gap normal to the surface is smaller).
 double tessellationError(const Profile& profile, std::uint32_t slices);
 
 }  // namespace revolve

@@ -5,6 +5,7 @@
 // u, v, primID, geomID and instID[0], and nothing on a miss; occluded writes tfar = -inf. Embree
 // never calls filter functions for user geometry itself, so the callbacks call rtcFilter* per
 // candidate, passing the very `args` they received (Embree reads a hidden field behind it).
+#include "queries.h"
 #include "shape_search.h"
 #include "surface_hit.h"
 #include "tessellation.h"
@@ -17,7 +18,7 @@
 namespace revolve {
 
 struct Geometry::Payload {
-  const Shape* shape;
+  const Shape::Impl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
   bool intersectFilter = false;
   bool occlusionFilter = false;
   std::atomic<std::uint64_t> rays{0}, nodesVisited{0}, shellTests{0}, quadratics{0};
@@ -46,7 +47,7 @@ Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
 }
 
 RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* context) noexcept {
-  RTCHit out;
+  RTCHit out{};
   out.Ng_x = hit.normal.x;
   out.Ng_y = hit.normal.y;
   out.Ng_z = hit.normal.z;
@@ -54,7 +55,7 @@ RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* con
   out.v = hit.v;
   out.primID = hit.segment;  // the profile segment, as documented in revolve.h
   out.geomID = geomID;
-  out.instID[0] = context->instID[0];
+  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) out.instID[level] = context->instID[level];
   return out;
 }
 
@@ -78,11 +79,17 @@ struct FilteredNearest {
   Stats& stats;
   const double leafHi = hi;
 
+  std::uint32_t acceptedSegment = 0xffffffffu;
+
+  // Candidates are offered nearest first within a segment; across segments, as in NearestHit, a
+  // candidate must beat the accepted hit in (s, segment) order, so ties go to the lower segment.
   bool operator()(std::uint32_t k) noexcept {
     const detail::SegmentHits hits = detail::hitsOfSegment<kCount>(shape, ray, k, leafHi, stats);
-    for (int j = 0; j < hits.count && hits.s[j] <= hi; ++j) {
+    for (int j = 0; j < hits.count; ++j) {
+      if (hits.s[j] > hi || (hits.s[j] == hi && k >= acceptedSegment)) break;
       if (offer(detail::surfaceHit(shape, ray, caller, hits.s[j], k))) {
         hi = hits.s[j];
+        acceptedSegment = k;
         break;
       }
     }
@@ -145,7 +152,7 @@ struct FilteredAny {
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
   const auto& payload = *static_cast<const Geometry::Payload*>(args->geometryUserPtr);
-  const Bounds b = payload.shape->bounds();
+  const Bounds b = payload.shape->bounds;
   RTCBounds& out = *args->bounds_o;
   out.lower_x = b.lower.x;
   out.lower_y = b.lower.y;
@@ -158,7 +165,7 @@ void boundsCallback(const RTCBoundsFunctionArguments* args) {
 template <bool kCount>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
-  const Shape::Impl& shape = payload.shape->impl();
+  const Shape::Impl& shape = *payload.shape;
   const unsigned N = args->N;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
@@ -190,7 +197,7 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 template <bool kCount>
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
-  const Shape::Impl& shape = payload.shape->impl();
+  const Shape::Impl& shape = *payload.shape;
   const unsigned N = args->N;
   const bool filtered = payload.occlusionFilter || args->context->filter != nullptr;
   Stats stats;
@@ -241,13 +248,14 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
   const unsigned instID = instanced ? context.instID[0] : RTC_INVALID_GEOMETRY_ID;
   const Geometry* geometry = state.lookup(state.user, instID, args->geomID);
   if (geometry == nullptr) return false;
+  const Shape::Impl& shape = *static_cast<const Geometry::Payload*>(rtcGetGeometryUserData(geometry->handle()))->shape;
   const Vec3 world{args->query->x, args->query->y, args->query->z};
 
   Vec3 point;
   float distance;
   std::uint32_t segment;
   if (!instanced) {
-    const SurfacePoint closest = closestPoint(geometry->shape(), world);
+    const SurfacePoint closest = detail::closestSurfacePoint(shape, world);
     point = closest.point, distance = closest.distance, segment = closest.segment;
   } else {
     // Exact under a similarity transform (distances scale uniformly); under any other transform
@@ -255,7 +263,7 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
     // the closest one.
     const float* toObject = context.world2inst[context.instStackSize - 1];
     const float* toWorld = context.inst2world[context.instStackSize - 1];
-    const SurfacePoint closest = closestPoint(geometry->shape(), transformPoint(toObject, world));
+    const SurfacePoint closest = detail::closestSurfacePoint(shape, transformPoint(toObject, world));
     point = transformPoint(toWorld, closest.point);
     distance = args->similarityScale > 0.0f ? closest.distance / args->similarityScale : distanceBetween(point, world);
     segment = closest.segment;
@@ -270,7 +278,7 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
 
 Geometry::Geometry(RTCDevice device, const Shape& shape, Options options)
     : payload_(std::make_unique<Payload>()) {
-  payload_->shape = &shape;
+  payload_->shape = &shape.impl();
   geometry_ = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
   if (geometry_ == nullptr) throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_USER) failed: " + deviceError(device));
   rtcSetGeometryUserPrimitiveCount(geometry_, 1);
@@ -285,7 +293,6 @@ Geometry::~Geometry() {
   if (geometry_ != nullptr) rtcReleaseGeometry(geometry_);
 }
 
-const Shape& Geometry::shape() const noexcept { return *payload_->shape; }
 
 void Geometry::setIntersectFilter(RTCFilterFunctionN filter) noexcept {
   rtcSetGeometryIntersectFilterFunction(geometry_, filter);

@@ -1,43 +1,12 @@
 #include "kajiya/strip_tree.h"
 
+#include "kernel/chord_band.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace revolve::detail {
 namespace {
-
-// The band {w : wLow <= n . p <= wHigh} holding the run, for the unit normal (nr, nz) oriented so
-// that nr >= 0 (the orientation that keeps nr rho + nz z convex along a ray).
-Band bandHolding(std::span<const Point2> run, double nr, double nz) {
-  if (nr < 0.0 || (nr == 0.0 && nz < 0.0)) nr = -nr, nz = -nz;
-  Band band{nr, nz, 0.0, 0.0};
-  band.wLow = band.wHigh = nr * run[0].r + nz * run[0].z;
-  for (const Point2& p : run) {
-    const double w = nr * p.r + nz * p.z;
-    band.wLow = std::min(band.wLow, w);
-    band.wHigh = std::max(band.wHigh, w);
-  }
-  return band;
-}
-
-struct Chord {
-  double ur, uz;  // unit direction
-};
-
-// The chord of a run; for a closed loop (end points equal) the direction to the farthest point.
-Chord chordOf(std::span<const Point2> run) {
-  Point2 to = run.back();
-  const Point2 from = run.front();
-  if (from.r == to.r && from.z == to.z) {
-    double farthest = -1.0;
-    for (const Point2& p : run) {
-      const double d = std::hypot(p.r - from.r, p.z - from.z);
-      if (d > farthest) farthest = d, to = p;
-    }
-  }
-  const double length = std::hypot(to.r - from.r, to.z - from.z);
-  return {(to.r - from.r) / length, (to.z - from.z) / length};
-}
 
 // Ballard's split: the interior point farthest from the chord (first of equals).
 std::size_t farthestFromChord(std::span<const Point2> run, Chord chord) {

@@ -10,11 +10,11 @@
 
 #include <revolve/revolve.h>
 
+#include "util/rounding.h"
+
 #include <cmath>
 
 namespace revolve::detail {
-
-inline constexpr double kUnitRoundoff = 0x1p-53;  // u for double
 
 // Shape constants the ray set-up needs.
 struct ShapeFrame {

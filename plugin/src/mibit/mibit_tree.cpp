@@ -1,5 +1,8 @@
 #include "mibit/mibit_tree.h"
 
+#include "kernel/chord_band.h"
+#include "util/rounding.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -9,17 +12,6 @@
 namespace revolve::detail {
 namespace {
 
-int signOf(double x) { return (x > 0.0) - (x < 0.0); }
-
-float roundDown(double x) {
-  const auto f = static_cast<float>(x);
-  return double(f) > x ? std::nextafter(f, -INFINITY) : f;
-}
-
-float roundUp(double x) {
-  const auto f = static_cast<float>(x);
-  return double(f) < x ? std::nextafter(f, INFINITY) : f;
-}
 
 struct Extent {
   double zLow, zHigh, rMin, rMax;
@@ -36,29 +28,12 @@ Extent extentOf(std::span<const Point2> run) {
   return extent;
 }
 
-// The band parallel to the chord of the run's end points that holds the whole run. Its normal is
-// rounded to float first and its limits computed for that normal, so the stored band holds the run
-// (up to the double rounding of the limits, which the shell test's margin covers).
+// The band parallel to the chord that holds the run. Its normal is rounded to float first and its
+// limits computed for that normal, so the stored band holds the run (up to the double rounding of
+// the limits, which the shell test's margin covers).
 Band chordBand(std::span<const Point2> run) {
-  Point2 from = run.front(), to = run.back();
-  if (from.r == to.r && from.z == to.z) {
-    // A closed loop: no chord, so take the direction to the farthest point.
-    double farthest = -1.0;
-    for (const Point2& p : run) {
-      const double d = std::hypot(p.r - from.r, p.z - from.z);
-      if (d > farthest) farthest = d, to = p;
-    }
-  }
-  const double length = std::hypot(to.r - from.r, to.z - from.z);
-  Band band{double(float((to.z - from.z) / length)), double(float(-(to.r - from.r) / length)), 0.0, 0.0};
-  if (band.nr < 0.0) band.nr = -band.nr, band.nz = -band.nz;  // nr >= 0 keeps the band function convex
-  band.wLow = band.wHigh = band.nr * run[0].r + band.nz * run[0].z;
-  for (const Point2& p : run) {
-    const double w = band.nr * p.r + band.nz * p.z;
-    band.wLow = std::min(band.wLow, w);
-    band.wHigh = std::max(band.wHigh, w);
-  }
-  return band;
+  const Chord chord = chordOf(run);
+  return bandHolding(run, double(float(chord.uz)), double(float(-chord.ur)));
 }
 
 double meanChord(double area, double perimeter) { return perimeter > 0.0 ? std::numbers::pi * area / perimeter : 0.0; }
@@ -132,6 +107,8 @@ class Builder {
       level = std::move(next);
     }
     linearise(level.front());
+    // Cannot happen within Profile::kMaxPoints (depth <= log2(intervals) + log2(leaves) + 2 <= 34):
+    // guards the 64-entry search stacks should that limit ever change.
     if (tree_.depth >= 64) throw std::logic_error("MIBIT depth exceeds the search stacks' 64 entries");
     return std::move(tree_);
   }
@@ -143,7 +120,7 @@ class Builder {
 
   // Shells of an interval's implicit MR nodes, by heap number, for TC and HY trees.
   void refineImplicitly(MonotoneInterval& interval) {
-    interval.shellOffset = static_cast<std::uint32_t>(tree_.implicitShells.size());
+    interval.shellOffset = tree_.implicitShells.size();
     if (options_.shell == ShellKind::cylinder) return;
     tree_.implicitShells.resize(tree_.implicitShells.size() + (std::size_t{2} << ceilLog2(interval.leaves)));
     fillImplicit(interval, 1, 0, interval.leaves);
@@ -154,7 +131,7 @@ class Builder {
     const std::span<const Point2> run = points_.subspan(first, last - first + 1);
     const Band band = chordBand(run);
     ImplicitShell& shell = tree_.implicitShells[interval.shellOffset + heap];
-    shell = {float(band.nr), float(band.nz), roundDown(band.wLow), roundUp(band.wHigh),
+    shell = {float(band.nr), float(band.nz), floatBelow(band.wLow), floatAbove(band.wHigh),
              run.size() == 2 ? NodeShell::cylinder : chooseShell(options_.shell, extentOf(run), band)};
     if (leafEnd - leafBegin == 1) return;
     const std::uint64_t middle = (leafBegin + leafEnd) / 2;
@@ -221,14 +198,14 @@ class Builder {
     const std::span<const Point2> run = points_.subspan(draft.segmentBegin, draft.segmentEnd - draft.segmentBegin + 1);
     const Extent extent = extentOf(run);
     const Band band = chordBand(run);
-    node.zLow = roundDown(extent.zLow);
-    node.zHigh = roundUp(extent.zHigh);
-    node.rMin = roundDown(extent.rMin);
-    node.rMax = roundUp(extent.rMax);
+    node.zLow = floatBelow(extent.zLow);
+    node.zHigh = floatAbove(extent.zHigh);
+    node.rMin = floatBelow(extent.rMin);
+    node.rMax = floatAbove(extent.rMax);
     node.coneNr = float(band.nr);
     node.coneNz = float(band.nz);
-    node.coneWLow = roundDown(band.wLow);
-    node.coneWHigh = roundUp(band.wHigh);
+    node.coneWLow = floatBelow(band.wLow);
+    node.coneWHigh = floatAbove(band.wHigh);
     if (draft.kind == MibitNode::Kind::segments && run.size() == 2) {
       node.shell = NodeShell::none;  // a single segment is its own truncated cone
     } else if (isRoot && options_.shell == ShellKind::hybrid) {

@@ -56,7 +56,8 @@ struct ImplicitShell {
 struct MonotoneInterval {
   std::uint32_t firstSegment, segmentCount;
   std::uint32_t leaves;       // MR leaves: uniform shares of the segments
-  std::uint32_t shellOffset;  // into MibitTree::implicitShells, indexed by heap number (root 1)
+  std::uint64_t shellOffset;  // into MibitTree::implicitShells, indexed by heap number (root 1): up to
+                              // 4 entries a segment, past 32 bits for the largest profiles
 };
 
 // Maximal runs of segments along which r and z are each monotone (a zero change fits either way).

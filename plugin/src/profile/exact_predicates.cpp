@@ -13,6 +13,8 @@
 // Requires IEEE-754 binary64 with round-to-nearest; must not be compiled with -ffast-math.
 #include "exact_predicates.h"
 
+#include "util/rounding.h"
+
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -26,9 +28,7 @@ namespace revolve::detail {
 namespace {
 
 // Unit roundoff of binary64: |fl(x op y) - x op y| <= kUnitRoundoff * |x op y| without underflow.
-constexpr double kUnitRoundoff = 0x1p-53;
 
-int signOf(double x) { return (x > 0.0) - (x < 0.0); }
 
 // Sign of x - y from a comparison, so it is exact even where the difference would overflow.
 int signOfDifference(double x, double y) { return (x > y) - (x < y); }

@@ -2,6 +2,7 @@
 // and the rule, so that nothing downstream (tree builders, kernels) has to guard against bad input.
 #include <revolve/revolve.h>
 
+#include "profile/points.h"
 #include "profile/self_intersection.h"
 #include "util/format.h"
 
@@ -12,6 +13,7 @@ namespace revolve {
 namespace {
 
 using detail::formatNumber;
+using detail::samePoint;
 
 std::string describePoint(std::size_t index, Point2 p) {
   return "profile point " + std::to_string(index) + " (r = " + formatNumber(p.r) + ", z = " + formatNumber(p.z) + ")";
@@ -34,7 +36,6 @@ void checkPoint(std::size_t index, Point2 p) {
   }
 }
 
-bool samePoint(Point2 a, Point2 b) { return a.r == b.r && a.z == b.z; }
 
 }  // namespace
 

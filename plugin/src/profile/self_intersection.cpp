@@ -28,6 +28,8 @@
 // Every report is an exact pair test's verdict, or (step 1) exact by construction.
 #include "self_intersection.h"
 
+#include "profile/points.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -43,7 +45,6 @@
 namespace revolve::detail {
 namespace {
 
-bool samePoint(Point2 a, Point2 b) { return a.r == b.r && a.z == b.z; }
 
 // The sweep order: by r, then by z.
 bool sweepsBefore(Point2 a, Point2 b) { return a.r < b.r || (a.r == b.r && a.z < b.z); }
