@@ -80,39 +80,49 @@ inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interv
     return cylinderShellPasses(ray, std::min(ra, rb), std::max(ra, rb), s0, s1, q0, q1);
   };
 
+  // Descends into the nearer child directly and keeps only the farther one on the stack (when both
+  // can hold hits), so a ray following one path copies no node through memory.
   Node stack[64];  // depth + 1 entries at most (see searchMibit)
   int top = 0;
-  stack[top++] = {1, 0, interval.leaves, plane(MibitTree::leafVertex(interval, 0)),
-                  plane(MibitTree::leafVertex(interval, interval.leaves)), lo};
-  while (top > 0) {
-    const Node node = stack[--top];
-    if (node.entry > hi) continue;
-    if constexpr (kCount) ++stats.nodesVisited;
-    if (hi != qHiAt) qHi = ray.rho2At(hi), qHiAt = hi;
-    const std::uint32_t a = MibitTree::leafVertex(interval, node.leafBegin);
-    const std::uint32_t b = MibitTree::leafVertex(interval, node.leafEnd);
-    if (node.leafEnd - node.leafBegin == 1) {
-      for (std::uint32_t k = a; k < b; ++k) {
-        if (visitSegment(k)) return true;
+  Node node{1, 0, interval.leaves, plane(MibitTree::leafVertex(interval, 0)),
+            plane(MibitTree::leafVertex(interval, interval.leaves)), lo};
+  for (;;) {
+    bool descended = false;
+    if (node.entry <= hi) {
+      if constexpr (kCount) ++stats.nodesVisited;
+      if (hi != qHiAt) qHi = ray.rho2At(hi), qHiAt = hi;
+      const std::uint32_t a = MibitTree::leafVertex(interval, node.leafBegin);
+      const std::uint32_t b = MibitTree::leafVertex(interval, node.leafEnd);
+      if (node.leafEnd - node.leafBegin == 1) {
+        for (std::uint32_t k = a; k < b; ++k) {
+          if (visitSegment(k)) return true;
+        }
+      } else {
+        const std::uint32_t middle = (node.leafBegin + node.leafEnd) / 2;
+        const std::uint32_t m = MibitTree::leafVertex(interval, middle);
+        const Plane pm = plane(m);
+        double entryLeft, entryRight;
+        const bool enterLeft = enter(2 * node.heap, a, m, node.first, pm, entryLeft);
+        const bool enterRight = enter(2 * node.heap + 1, m, b, pm, node.last, entryRight);
+        if (enterLeft && enterRight) {
+          const bool leftFirst = entryLeft <= entryRight;
+          const Node left{2 * node.heap, node.leafBegin, middle, node.first, pm, entryLeft};
+          const Node right{2 * node.heap + 1, middle, node.leafEnd, pm, node.last, entryRight};
+          stack[top++] = leftFirst ? right : left;
+          node = leftFirst ? left : right;
+          descended = true;
+        } else if (enterLeft) {
+          node = {2 * node.heap, node.leafBegin, middle, node.first, pm, entryLeft};
+          descended = true;
+        } else if (enterRight) {
+          node = {2 * node.heap + 1, middle, node.leafEnd, pm, node.last, entryRight};
+          descended = true;
+        }
       }
-      continue;
     }
-    const std::uint32_t middle = (node.leafBegin + node.leafEnd) / 2;
-    const std::uint32_t m = MibitTree::leafVertex(interval, middle);
-    const Plane pm = plane(m);
-    Node left{2 * node.heap, node.leafBegin, middle, node.first, pm, 0.0};
-    Node right{2 * node.heap + 1, middle, node.leafEnd, pm, node.last, 0.0};
-    const bool enterLeft = enter(left.heap, a, m, left.first, left.last, left.entry);
-    const bool enterRight = enter(right.heap, m, b, right.first, right.last, right.entry);
-    if (enterLeft && enterRight) {
-      const bool leftFirst = left.entry <= right.entry;  // the nearer child is popped next
-      stack[top++] = leftFirst ? right : left;
-      stack[top++] = leftFirst ? left : right;
-    } else if (enterLeft) {
-      stack[top++] = left;
-    } else if (enterRight) {
-      stack[top++] = right;
-    }
+    if (descended) continue;
+    if (top == 0) break;
+    node = stack[--top];
   }
   return false;
 }

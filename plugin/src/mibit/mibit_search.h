@@ -52,44 +52,45 @@ inline void searchMibit(const MibitTree& tree, std::span<const Point2> points, b
     std::uint32_t node;
     double s;
   };
-  // Each level pops one entry and pushes at most two, so the stack holds at most depth + 1 entries;
-  // buildMibitTree keeps depth below 64 (about log2(intervals) + log2(leaves per interval) + 2).
+  // Each level pushes at most the farther of two children and descends into the nearer directly,
+  // so the stack holds at most depth entries; buildMibitTree keeps depth below 64 (about
+  // log2(intervals) + log2(leaves per interval) + 2).
   Entry stack[64];
   int top = 0;
-  double entry;
-  if (!enterMibitNode<kCount>(tree.nodes[0], ray, ray.lo, hi, rangeSearch, entry, stats)) return;
-  stack[top++] = {0, entry};
+  Entry current{0, 0.0};
+  if (!enterMibitNode<kCount>(tree.nodes[0], ray, ray.lo, hi, rangeSearch, current.s, stats)) return;
 
-  while (top > 0) {
-    const Entry current = stack[--top];
-    if (current.s > hi) continue;  // the best hit so far lies before this node
-    const MibitNode& node = tree.nodes[current.node];
-    if constexpr (kCount) ++stats.nodesVisited;
-    switch (node.kind) {
-      case MibitNode::Kind::interval:
+  for (;;) {
+    bool descended = false;
+    if (current.s <= hi) {  // else the best hit so far lies before this node
+      const MibitNode& node = tree.nodes[current.node];
+      if constexpr (kCount) ++stats.nodesVisited;
+      if (node.kind == MibitNode::Kind::interval) {
         if (searchInterval<kCount>(tree, tree.intervals[node.first], points, rangeSearch, ray, hi, visitSegment, stats)) {
           return;
         }
-        continue;
-      case MibitNode::Kind::segments:
+      } else if (node.kind == MibitNode::Kind::segments) {
         for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
           if (visitSegment(k)) return;
         }
-        continue;
-      case MibitNode::Kind::inner: break;
+      } else {
+        double entryA = 0.0, entryB = 0.0;
+        const bool a = enterMibitNode<kCount>(tree.nodes[node.first], ray, ray.lo, hi, rangeSearch, entryA, stats);
+        const bool b = enterMibitNode<kCount>(tree.nodes[node.first + 1], ray, ray.lo, hi, rangeSearch, entryB, stats);
+        if (a && b) {
+          const bool aFirst = entryA <= entryB;
+          stack[top++] = aFirst ? Entry{node.first + 1, entryB} : Entry{node.first, entryA};
+          current = aFirst ? Entry{node.first, entryA} : Entry{node.first + 1, entryB};
+          descended = true;
+        } else if (a || b) {
+          current = a ? Entry{node.first, entryA} : Entry{node.first + 1, entryB};
+          descended = true;
+        }
+      }
     }
-    double entryA = 0.0, entryB = 0.0;
-    const bool a = enterMibitNode<kCount>(tree.nodes[node.first], ray, ray.lo, hi, rangeSearch, entryA, stats);
-    const bool b = enterMibitNode<kCount>(tree.nodes[node.first + 1], ray, ray.lo, hi, rangeSearch, entryB, stats);
-    if (a && b) {
-      const bool aFirst = entryA <= entryB;  // push the farther child first: the nearer is popped next
-      stack[top++] = aFirst ? Entry{node.first + 1, entryB} : Entry{node.first, entryA};
-      stack[top++] = aFirst ? Entry{node.first, entryA} : Entry{node.first + 1, entryB};
-    } else if (a) {
-      stack[top++] = {node.first, entryA};
-    } else if (b) {
-      stack[top++] = {node.first + 1, entryB};
-    }
+    if (descended) continue;
+    if (top == 0) return;
+    current = stack[--top];
   }
 }
 
