@@ -150,19 +150,7 @@ std::size_t unexplainedDisagreements(std::span<const Point2> points, const Shape
         (!got || std::abs(got->t - double(expected->t)) * dn <= 0x1p-22 * (std::abs(got->t) * dn + size))) {
       continue;
     }
-    bool fragile = false;
-    if (ray.direction.z == 0.0f) {
-      for (const Point2& p : points) fragile |= double(ray.origin.z) == p.z;  // grazing a vertex's plane
-    }
-    for (int axis = 0; axis < 3 && !fragile; ++axis) {
-      for (double sign : {-1.0, 1.0}) {
-        reference::RefRay moved = toRef(ray);
-        (axis == 0 ? moved.ox : axis == 1 ? moved.oy : moved.oz) += sign * 1e-9 * size;
-        const auto other = reference::intersectProfile(points, moved);
-        fragile |= other.has_value() != expected.has_value() ||
-                   (other && expected && std::abs(double(other->t - expected->t)) * dn > 1e-6 * size);
-      }
-    }
+    const bool fragile = reference::verdictIsFragile(points, toRef(ray), 1e-9L * size, size);
     wrong += !fragile;
   }
   return wrong;

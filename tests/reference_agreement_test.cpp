@@ -20,31 +20,6 @@ reference::RefRay toRef(const Ray& ray) {
 
 double norm(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
 
-// The oracle's verdict is fragile if nudging the origin by 1e-9 of the shape's size flips it, or
-// if the ray lies in a vertex's horizontal plane (where the oracle, with closed z ranges, reports
-// the tangent circles of local z extrema that the library, with half-open ranges, leaves out).
-bool fragile(std::span<const Point2> points, const Ray& ray, double size) {
-  if (ray.direction.z == 0.0f) {
-    for (const Point2& p : points) {
-      if (double(ray.origin.z) == p.z) return true;
-    }
-  }
-  const reference::RefRay base = toRef(ray);
-  const auto hit = reference::intersectProfile(points, base);
-  for (int axis = 0; axis < 3; ++axis) {
-    for (double sign : {-1.0, 1.0}) {
-      reference::RefRay moved = base;
-      (axis == 0 ? moved.ox : axis == 1 ? moved.oy : moved.oz) += sign * 1e-9 * size;
-      const auto other = reference::intersectProfile(points, moved);
-      if (other.has_value() != hit.has_value()) return true;
-      // A nudge that moves the nearest hit to another part of the surface (a seam, or a nearer
-      // surface appearing) makes the distance fragile too.
-      if (other && hit && std::abs(double(other->t - hit->t)) * norm(ray.direction) > 1e-6 * size) return true;
-    }
-  }
-  return false;
-}
-
 TEST(ReferenceAgreementTest, MatchesTheLongDoubleOracleOnEveryStandardProfile) {
   constexpr std::uint64_t kSeed = 0x0dd1;
   std::mt19937_64 random(kSeed);
@@ -79,7 +54,7 @@ TEST(ReferenceAgreementTest, MatchesTheLongDoubleOracleOnEveryStandardProfile) {
         }
         continue;
       }
-      if (fragile(named.points, ray, size)) {
+      if (reference::verdictIsFragile(named.points, toRef(ray), 1e-9L * size, size)) {
         ++(i < kIncoherent ? fragileIncoherent : fragileAwkward);
         continue;
       }

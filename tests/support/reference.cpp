@@ -459,4 +459,26 @@ std::optional<RefHit> intersectTorus(long double majorRadius, long double minorR
   return makeHit(t, normalized(p - core), 0);
 }
 
+bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long double nudge, long double size) {
+  if (ray.dz == 0) {
+    for (const Point2& p : profile) {
+      if (ray.oz == p.z) return true;
+    }
+  }
+  const std::optional<RefHit> hit = intersectProfile(profile, ray);
+  const long double speed = std::sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (long double sign : {-1.0L, 1.0L}) {
+      RefRay moved = ray;
+      (axis == 0 ? moved.ox : axis == 1 ? moved.oy : moved.oz) += sign * nudge;
+      const std::optional<RefHit> other = intersectProfile(profile, moved);
+      if (other.has_value() != hit.has_value()) return true;
+      // A nudge that moves the nearest hit to another part of the surface (a seam, or a nearer
+      // surface appearing) makes the distance fragile too.
+      if (other && hit && std::abs(other->t - hit->t) * speed > 1e-6L * size) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace revolve::reference

@@ -46,6 +46,12 @@ std::vector<RefHit> allHits(std::span<const Point2> profile, const RefRay& ray);
 // Nearest hit with tnear <= t <= tfar; ties go to the lower segment index.
 std::optional<RefHit> intersectProfile(std::span<const Point2> profile, const RefRay& ray);
 
+// Whether the oracle's answer for `ray` is fragile, so that a library answer differing from it is
+// within rounding rather than wrong: the ray lies in a vertex's horizontal plane (where the oracle's
+// closed z ranges report the tangent circles of local z extrema), or nudging its origin by
+// `nudge` along any axis changes the oracle's verdict or moves its hit by more than 1e-6 * size.
+bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long double nudge, long double size);
+
 // Distance from the point (x, y, z) to the surface of revolution: the 2-D distance from
 // (sqrt(x^2 + y^2), z) to the profile polyline.
 long double meridianDistance(std::span<const Point2> profile, long double x, long double y, long double z);
