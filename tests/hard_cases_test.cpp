@@ -350,5 +350,41 @@ TEST(HardCasesTest, EveryHitLiesOnTheSurfaceWithAUnitConsistentNormal) {
   }
 }
 
+TEST(HardCasesTest, HitsWithinSubnormalSquaresOfTheAxisHaveUnitNormals) {
+  // A needle: the cone r = 2e-160 z, 0 <= z <= 1, and rays leaving its axis (inside it) at the middle
+  // height, where re-centring (about the shape's centre and the closest approach) is exact. Their hits
+  // are at distances near 1e-160, whose squares are subnormal: found by fuzzing, (x, y) / sqrt(x^2 +
+  // y^2) was then not unit. The needle is far thinner than the rays' rounding (about 1e-17 of the
+  // object), so a miss is within rounding, and so is the azimuth of a hit (the needle's radius of
+  // curvature is 1e-160). What is not: a hit must be within the kernel's double rounding of the
+  // origin (a few units of 2^-53 of the object's size 1), with a unit normal perpendicular to the
+  // axis (the slope's share is 1e-160).
+  const Profile profile(std::vector<Point2>{{0, 0}, {2e-160, 1}});
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (const Variant& variant : kVariants) {
+    const Shape shape(profile, variant.options);
+    std::size_t fired = 0, hits = 0, wrong = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const Ray ray{{0, 0, 0.5f}, {unit(random), unit(random), 0.2f * unit(random)}};
+      ++fired;
+      const std::optional<Hit> hit = intersect(shape, ray);
+      if (!hit) continue;
+      ++hits;
+      const bool ok = hit->t * norm(ray.direction) <= 4 * 0x1p-53 * 1.5 && std::abs(norm(hit->normal) - 1.0) <= 4 * kFloatRoundoff &&
+                      std::abs(hit->normal.z) <= kFloatRoundoff;
+      if (!ok && ++wrong <= 3) {
+        ADD_FAILURE() << variant.name << ": d = (" << ray.direction.x << ", " << ray.direction.y << ", "
+                      << ray.direction.z << "): t " << hit->t << ", n (" << hit->normal.x << ", " << hit->normal.y
+                      << ", " << hit->normal.z << ")";
+      }
+    }
+    report("hits within 1e-160 of the axis", variant.name, fired, wrong);
+    std::printf("  (%zu of them hit; the rest miss within rounding)\n", hits);
+    EXPECT_GT(hits, fired / 10) << "too few hits for the check to mean anything";
+    EXPECT_EQ(wrong, 0u);
+  }
+}
+
 }  // namespace
 }  // namespace revolve

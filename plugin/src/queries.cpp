@@ -2,6 +2,7 @@
 #include "shape_search.h"
 #include "queries.h"
 #include "surface_hit.h"
+#include "util/azimuth.h"
 
 #include <cmath>
 
@@ -147,11 +148,10 @@ SurfacePoint closestSurfacePoint(const Shape::Impl& impl, Vec3 p) noexcept {
   if (!(std::abs(px) < HUGE_VAL && std::abs(py) < HUGE_VAL && std::abs(z) < HUGE_VAL)) {
     return {p, std::numeric_limits<float>::quiet_NaN(), 0};  // no point is closest to a non-finite one
   }
-  const double rho = std::sqrt(px * px + py * py);
+  // Same azimuth as p; on the axis every azimuth is equally close.
+  const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
   ClosestSegment closest(impl, rho, z);
   closest.search();
-  // Same azimuth as p; on the axis every azimuth is equally close.
-  const double cosPhi = rho > 0.0 ? px / rho : 1.0, sinPhi = rho > 0.0 ? py / rho : 0.0;
   const Point2 q = closest.point();
   return {{float(q.r * cosPhi), float(q.r * sinPhi), float(q.z + impl.frame.zCentre)},
           float(std::sqrt(closest.distance2())), closest.segment()};

@@ -3,6 +3,7 @@
 
 #include "kernel/meridian_ray.h"
 #include "shape_impl.h"
+#include "util/azimuth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,9 +24,7 @@ inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ra
   const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
   const double er = p1.r - p0.r, ez = p1.z - p0.z;
   const double length = std::sqrt(er * er + ez * ez);  // magnitudes ~R: hypot's overflow guard is not needed
-  const double rho = std::sqrt(px * px + py * py);
-  // On the axis every azimuth is the same point; any will do for the normal.
-  const double cosPhi = rho > 0.0 ? px / rho : 1.0, sinPhi = rho > 0.0 ? py / rho : 0.0;
+  const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
   const double nr = ez / length, nz = -er / length;  // right of the direction of travel
 
   Hit hit;
