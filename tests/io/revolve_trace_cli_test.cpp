@@ -12,6 +12,7 @@
 #include "support/test_profiles.h"
 
 #include "scratch_directory.h"
+#include "support/process.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -22,18 +23,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <numbers>
 #include <optional>
 #include <random>
-#include <spawn.h>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <tuple>
 #include <vector>
-
-extern char** environ;
 
 namespace revolve {
 namespace {
@@ -46,44 +42,9 @@ using testing::readWholeFile;
 
 constexpr double kPi = std::numbers::pi;
 
-struct Result {
-  int status = -1;  // exit status, or 128 + signal
-  std::string err;
-};
+using Result = testing::ProcessResult;
 
-// Runs revolve-trace with `args`, stdin from /dev/null; stdout and stderr go to files in a
-// directory of their own, so that the directory the tool writes to holds only what it made.
-Result runTrace(const std::vector<std::string>& args) {
-  const ScratchDirectory capture;
-  const std::string outPath = capture / "stdout", errPath = capture / "stderr";
-  std::vector<std::string> argv{REVOLVE_TRACE_PATH};
-  argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> pointers;
-  for (std::string& arg : argv) pointers.push_back(arg.data());
-  pointers.push_back(nullptr);
-
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  Result result;
-  if (spawned != 0) {
-    ADD_FAILURE() << "cannot run " << REVOLVE_TRACE_PATH << ": " << std::strerror(spawned);
-    return result;
-  }
-  int status = 0;
-  if (waitpid(pid, &status, 0) != pid) {
-    ADD_FAILURE() << "waitpid failed";
-    return result;
-  }
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.err = readWholeFile(errPath);
-  return result;
-}
+Result runTrace(const std::vector<std::string>& args) { return testing::runProcess(REVOLVE_TRACE_PATH, args); }
 
 std::size_t lineCount(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 

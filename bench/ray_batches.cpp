@@ -1,0 +1,96 @@
+#include "ray_batches.h"
+
+#include <tbb/parallel_for.h>
+
+#include <stdexcept>
+
+namespace revolve::bench {
+namespace {
+
+constexpr std::size_t kBatchRays = 1024;        // per batch on one thread: 20 us to 10 ms of work
+constexpr std::size_t kThreadedBatchRays = 16384;  // enough work to spread over the threads
+
+}  // namespace
+
+RTCRayHit rayHitOf(const Ray& ray) {
+  RTCRayHit rayHit{};
+  rayHit.ray.org_x = ray.origin.x;
+  rayHit.ray.org_y = ray.origin.y;
+  rayHit.ray.org_z = ray.origin.z;
+  rayHit.ray.dir_x = ray.direction.x;
+  rayHit.ray.dir_y = ray.direction.y;
+  rayHit.ray.dir_z = ray.direction.z;
+  rayHit.ray.tnear = ray.tnear;
+  rayHit.ray.tfar = ray.tfar;
+  rayHit.ray.mask = ~0u;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  return rayHit;
+}
+
+std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays) {
+  if (rays.size() % 8 != 0) throw std::invalid_argument("packetsOf: the ray count must be a multiple of 8");
+  auto packets = std::make_shared<std::vector<RTCRayHit8>>(rays.size() / 8);
+  for (std::size_t p = 0; p < packets->size(); ++p) {
+    RTCRayHit8& packet = (*packets)[p];
+    for (int i = 0; i < 8; ++i) {
+      const Ray& ray = rays[8 * p + i];
+      packet.ray.org_x[i] = ray.origin.x;
+      packet.ray.org_y[i] = ray.origin.y;
+      packet.ray.org_z[i] = ray.origin.z;
+      packet.ray.dir_x[i] = ray.direction.x;
+      packet.ray.dir_y[i] = ray.direction.y;
+      packet.ray.dir_z[i] = ray.direction.z;
+      packet.ray.tnear[i] = ray.tnear;
+      packet.ray.tfar[i] = ray.tfar;
+      packet.ray.time[i] = 0.0f;
+      packet.ray.mask[i] = ~0u;
+      packet.ray.id[i] = 0;
+      packet.ray.flags[i] = 0;
+      packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    }
+  }
+  return packets;
+}
+
+std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ray>& rays) {
+  return [scene, &rays, cursor = std::size_t{0}]() mutable {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (std::size_t i = 0; i < kBatchRays; ++i) {
+      RTCRayHit rayHit = rayHitOf(rays[cursor]);
+      rtcIntersect1(scene, &context, &rayHit);
+      if (++cursor == rays.size()) cursor = 0;
+    }
+    return kBatchRays;
+  };
+}
+
+std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets) {
+  return [scene, packets, cursor = std::size_t{0}]() mutable {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(32) const int valid[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    for (std::size_t i = 0; i < kBatchRays / 8; ++i) {
+      RTCRayHit8 packet = (*packets)[cursor];
+      rtcIntersect8(valid, scene, &context, &packet);
+      if (++cursor == packets->size()) cursor = 0;
+    }
+    return kBatchRays;
+  };
+}
+
+std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray>& rays) {
+  return [scene, &rays, cursor = std::size_t{0}]() mutable {
+    const std::size_t start = cursor;
+    tbb::parallel_for(std::size_t{0}, kThreadedBatchRays, [&](std::size_t i) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      RTCRayHit rayHit = rayHitOf(rays[(start + i) % rays.size()]);
+      rtcIntersect1(scene, &context, &rayHit);
+    });
+    cursor = (start + kThreadedBatchRays) % rays.size();
+    return kThreadedBatchRays;
+  };
+}
+
+}  // namespace revolve::bench

@@ -1,0 +1,25 @@
+// The ways a benchmark traces rays through Embree, each as a batch function for the timer: one ray
+// at a time (rtcIntersect1), packets of eight (rtcIntersect8), and rtcIntersect1 on all threads.
+// Every batch walks its ray set cyclically from where the previous batch stopped.
+#pragma once
+
+#include <embree3/rtcore.h>
+#include <revolve/revolve.h>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace revolve::bench {
+
+RTCRayHit rayHitOf(const Ray& ray);
+
+// Rays 8i .. 8i + 7 of `rays` as packet i (rays.size() must be a multiple of 8).
+std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays);
+
+std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ray>& rays);
+std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets);
+std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray>& rays);
+
+}  // namespace revolve::bench

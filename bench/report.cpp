@@ -1,0 +1,243 @@
+#include "report.h"
+
+#include "io/text_files.h"
+
+#include <nlohmann/json.hpp>
+
+#include <embree3/rtcore.h>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace revolve::bench {
+namespace {
+
+using nlohmann::json;
+
+std::string cpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown";
+}
+
+std::string today() {
+  const std::time_t now = std::time(nullptr);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
+  return text;
+}
+
+std::string bytesText(double bytes) {
+  char text[32];
+  if (bytes >= 1e6) std::snprintf(text, sizeof text, "%.1f MB", bytes / 1e6);
+  else std::snprintf(text, sizeof text, "%.1f KB", bytes / 1e3);
+  return text;
+}
+
+const char* modeTitle(const std::string& mode) {
+  if (mode == kIncoherent1) return "incoherent rays, rtcIntersect1, 1 thread";
+  if (mode == kCamera1) return "camera rays, rtcIntersect1, 1 thread";
+  if (mode == kCamera8) return "camera rays, rtcIntersect8, 1 thread";
+  return "incoherent rays, rtcIntersect1, all threads";
+}
+
+json errorJson(const std::optional<ErrorSummary>& e) {
+  if (!e) return nullptr;
+  return {{"rays", e->rays},
+          {"hits", e->hits},
+          {"residual_max", e->residualMax},
+          {"residual_p99", e->residualP99},
+          {"residual_rms", e->residualRms},
+          {"normal_max_degrees", e->normalMaxDegrees},
+          {"normal_p99_degrees", e->normalP99Degrees},
+          {"disagreements", e->disagreements},
+          {"decided", e->decided},
+          {"disagreement_fraction", e->disagreementFraction()}};
+}
+
+json configJson(const ConfigResult& c) {
+  json speed = json::object();
+  for (const auto& [mode, t] : c.speed) speed[mode] = {{"median", t.median}, {"low", t.low}, {"high", t.high}};
+  return {{"method", c.config.method()},
+          {"label", c.config.label()},
+          {"points", c.config.points},
+          {"slices", c.config.slices},
+          {"triangles", c.triangles},
+          {"build_seconds", c.buildSeconds},
+          {"revolve_bytes", c.revolveBytes},
+          {"embree_bytes", c.embreeBytes},
+          {"total_bytes", c.totalBytes()},
+          {"error_incoherent", errorJson(c.incoherent)},
+          {"error_camera", errorJson(c.camera)},
+          {"mrays_per_second", speed}};
+}
+
+json shapeJson(const ShapeResult& shape) {
+  json configs = json::array();
+  for (const ConfigResult& c : shape.configs) configs.push_back(configJson(c));
+  json matched = json::array();
+  for (const MatchedRow& row : shape.matched) {
+    const auto pick = [&](const std::optional<std::size_t>& i) -> json {
+      if (!i) return nullptr;
+      const ConfigResult& c = shape.configs[*i];
+      return {{"label", c.config.label()},
+              {"mrays_per_second", c.speed.at(row.mode).median},
+              {"residual_max", (row.mode.rfind("camera", 0) == 0 ? c.camera : c.incoherent)->residualMax},
+              {"total_bytes", c.totalBytes()}};
+    };
+    json entry = {{"mode", row.mode}, {"level", row.level}, {"mibit", pick(row.mibit)}, {"mesh", pick(row.mesh)},
+                  {"leanest_mibit", pick(row.leanestMibit)}, {"leanest_mesh", pick(row.leanestMesh)}};
+    if (row.mibit && row.mesh) {
+      entry["speed_ratio"] = shape.configs[*row.mibit].speed.at(row.mode).median / shape.configs[*row.mesh].speed.at(row.mode).median;
+    }
+    if (row.leanestMibit && row.leanestMesh) {
+      entry["memory_ratio"] = shape.configs[*row.leanestMesh].totalBytes() / shape.configs[*row.leanestMibit].totalBytes();
+    }
+    matched.push_back(entry);
+  }
+  return {{"shape", shape.name},
+          {"size", shape.size},
+          {"incoherent_rays", shape.incoherentRays},
+          {"camera_rays", shape.cameraRays},
+          {"incoherent_grazing", shape.incoherentGrazing},
+          {"camera_grazing", shape.cameraGrazing},
+          {"configs", configs},
+          {"matched", matched}};
+}
+
+void printShape(std::FILE* out, const ShapeResult& shape) {
+  std::fprintf(out, "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays)\n", shape.name.c_str(),
+               shape.size, shape.incoherentRays, shape.cameraRays);
+  std::fprintf(out, "%-22s %10s %10s %9s %9s %9s | %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max", "err p99",
+               "normal p99", "miss/hit", "disagree", "inc 1", "cam 1", "cam 8", "inc all", "revolve", "embree", "build ms");
+  for (const ConfigResult& c : shape.configs) {
+    const auto speed = [&](const char* mode) {
+      const auto it = c.speed.find(mode);
+      char text[16] = "-";
+      if (it != c.speed.end()) std::snprintf(text, sizeof text, "%.3g", it->second.median);
+      return std::string(text);
+    };
+    if (c.incoherent) {
+      std::fprintf(out, "%-22s %10.2e %10.2e %8.3f° %9zu %8.4f%% |", c.config.label().c_str(), c.incoherent->residualMax,
+                   c.incoherent->residualP99, c.incoherent->normalP99Degrees, c.incoherent->hits,
+                   100.0 * c.incoherent->disagreementFraction());
+    } else {
+      std::fprintf(out, "%-22s %10s %10s %9s %9s %9s |", c.config.label().c_str(), "-", "-", "-", "-", "-");
+    }
+    std::fprintf(out, " %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(), speed(kCamera1).c_str(),
+                 speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(), bytesText(double(c.revolveBytes)).c_str(),
+                 bytesText(double(c.embreeBytes)).c_str(), 1e3 * c.buildSeconds);
+  }
+}
+
+void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
+  for (const char* mode : {kIncoherent1, kCamera8, kCamera1, kIncoherentAll}) {
+    std::fprintf(out, "\nMatched error: fastest MIBIT against fastest mesh with max error <= level (%s; Mrays/s)\n",
+                 modeTitle(mode));
+    std::fprintf(out, "%-8s %7s | %-14s %8s | %-16s %8s | %7s | %10s\n", "shape", "level", "MIBIT", "Mrays/s", "mesh",
+                 "Mrays/s", "ratio", "mem ratio");
+    for (const ShapeResult& shape : shapes) {
+      for (const MatchedRow& row : shape.matched) {
+        if (row.mode != mode) continue;
+        const auto label = [&](const std::optional<std::size_t>& i) { return i ? shape.configs[*i].config.label() : std::string("none"); };
+        const auto speed = [&](const std::optional<std::size_t>& i) { return i ? shape.configs[*i].speed.at(mode).median : NAN; };
+        char ratio[16] = "-", memory[16] = "-";
+        if (row.mibit && row.mesh) std::snprintf(ratio, sizeof ratio, "%.2fx", speed(row.mibit) / speed(row.mesh));
+        if (row.leanestMibit && row.leanestMesh) {
+          std::snprintf(memory, sizeof memory, "%.0fx",
+                        shape.configs[*row.leanestMesh].totalBytes() / shape.configs[*row.leanestMibit].totalBytes());
+        }
+        std::fprintf(out, "%-8s %7.0e | %-14s %8.3g | %-16s %8.3g | %7s | %10s\n", shape.name.c_str(), row.level,
+                     label(row.mibit).c_str(), speed(row.mibit), label(row.mesh).c_str(), speed(row.mesh), ratio, memory);
+      }
+    }
+  }
+}
+
+void printScaling(std::FILE* out, const ShapeResult& shape) {
+  std::fprintf(out, "\n== scaling: %s, %zu incoherent rays, rtcIntersect1, 1 thread (Mrays/s; max error)\n", shape.name.c_str(),
+               shape.incoherentRays);
+  std::fprintf(out, "%-20s %10s %10s %12s\n", "method", "Mrays/s", "err max", "memory");
+  for (const ConfigResult& c : shape.configs) {
+    std::fprintf(out, "%-20s %10.4g %10.2e %12s\n", c.config.label().c_str(), c.speed.at(kIncoherent1).median,
+                 c.incoherent ? c.incoherent->residualMax : NAN, bytesText(c.totalBytes()).c_str());
+  }
+}
+
+std::string csvNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+
+}  // namespace
+
+void printTables(std::FILE* out, const RunResults& results) {
+  for (const ShapeResult& shape : results.speedError) printShape(out, shape);
+  if (!results.speedError.empty()) printMatched(out, results.speedError);
+  for (const ShapeResult& shape : results.scaling) printScaling(out, shape);
+}
+
+void writeJson(const std::string& path, const RunResults& results, const std::string& commandLine) {
+  json speedError = json::array(), scaling = json::array();
+  for (const ShapeResult& shape : results.speedError) speedError.push_back(shapeJson(shape));
+  for (const ShapeResult& shape : results.scaling) scaling.push_back(shapeJson(shape));
+  const RunSettings& s = results.settings;
+  const json document = {
+      {"command", commandLine},
+      {"date", today()},
+      {"machine", {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}}},
+      {"embree", RTC_VERSION_STRING},
+      {"settings",
+       {{"quick", s.quick},
+        {"incoherent_rays", s.incoherentRays},
+        {"camera_width", s.cameraWidth},
+        {"camera_height", s.cameraHeight},
+        {"repetitions", s.repetitions},
+        {"min_seconds", s.minSeconds},
+        {"seed", s.seed}}},
+      {"speed_error", speedError},
+      {"scaling", scaling}};
+  const std::string text = document.dump(1) + "\n";
+  io::writeFileAtomically(path, [&](std::FILE* file) {
+    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw std::runtime_error("short write");
+  });
+}
+
+void writeCsv(const std::string& path, const RunResults& results) {
+  std::ostringstream csv;
+  csv << "suite,shape,method,points,slices,mode,mrays_median,mrays_low,mrays_high,residual_max,residual_p99,"
+         "residual_rms,normal_p99_degrees,disagreement_fraction,revolve_bytes,embree_bytes,build_seconds\n";
+  const auto rows = [&](const char* suite, const std::vector<ShapeResult>& shapes) {
+    for (const ShapeResult& shape : shapes) {
+      for (const ConfigResult& c : shape.configs) {
+        for (const auto& [mode, t] : c.speed) {
+          const std::optional<ErrorSummary>& e = mode.rfind("camera", 0) == 0 ? c.camera : c.incoherent;
+          csv << suite << ',' << shape.name << ',' << c.config.method() << ',' << c.config.points << ',' << c.config.slices
+              << ',' << mode << ',' << csvNumber(t.median) << ',' << csvNumber(t.low) << ',' << csvNumber(t.high) << ',';
+          if (e) {
+            csv << csvNumber(e->residualMax) << ',' << csvNumber(e->residualP99) << ',' << csvNumber(e->residualRms) << ','
+                << csvNumber(e->normalP99Degrees) << ',' << csvNumber(e->disagreementFraction());
+          } else {
+            csv << ",,,,";
+          }
+          csv << ',' << c.revolveBytes << ',' << c.embreeBytes << ',' << csvNumber(c.buildSeconds) << '\n';
+        }
+      }
+    }
+  };
+  rows("speed_error", results.speedError);
+  rows("scaling", results.scaling);
+  const std::string text = csv.str();
+  io::writeFileAtomically(path, [&](std::FILE* file) {
+    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw std::runtime_error("short write");
+  });
+}
+
+}  // namespace revolve::bench

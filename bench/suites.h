@@ -1,0 +1,22 @@
+// The benchmark's subcommands: speed against error over the test shapes, and scaling with the
+// number of profile points.
+#pragma once
+
+#include "results.h"
+
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+namespace revolve::bench {
+
+// Error levels (relative to the object's size) at which methods are matched.
+inline const std::vector<double> kErrorLevels = {1e-3, 1e-4, 1e-5, 1e-6};
+
+// Every method on every test shape (or on the shapes named in `only`, if any).
+std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings, const std::vector<std::string>& only);
+
+// MIBIT, the linear scan, Kajiya's strip tree and meshes on the vase, 16 to 32,768 points.
+std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& settings);
+
+}  // namespace revolve::bench

@@ -1,0 +1,76 @@
+#include "traced_scene.h"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace revolve::bench {
+
+std::string MethodConfig::method() const {
+  switch (kind) {
+    case MethodKind::mibit:
+      return shell == ShellKind::cylinder ? "mibit" : shell == ShellKind::cone ? "mibit_cone" : "mibit_hybrid";
+    case MethodKind::linear: return "linear";
+    case MethodKind::kajiya: return "kajiya";
+    case MethodKind::mesh: return "mesh";
+    case MethodKind::sphere: return "sphere";
+  }
+  return "?";
+}
+
+std::string MethodConfig::label() const {
+  if (kind == MethodKind::sphere) return "analytic sphere";
+  if (kind == MethodKind::mesh) return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
+  return method() + " " + std::to_string(points);
+}
+
+MemoryMonitor::MemoryMonitor(RTCDevice device) { rtcSetDeviceMemoryMonitorFunction(device, record, this); }
+
+bool MemoryMonitor::record(void* user, ssize_t bytes, bool /*post*/) {
+  static_cast<MemoryMonitor*>(user)->bytes_.fetch_add(bytes);
+  return true;
+}
+
+TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile,
+                         const MethodConfig& config, const AnalyticSphere& sphere)
+    : config_(config), sphere_(sphere) {
+  const std::int64_t before = monitor.bytes();
+  const auto start = std::chrono::steady_clock::now();
+  scene_ = rtcNewScene(device);
+  if (scene_ == nullptr) throw std::runtime_error("rtcNewScene failed");
+  RTCGeometry geometry = nullptr;
+  switch (config.kind) {
+    case MethodKind::sphere: geometry = newAnalyticSphereGeometry(device, sphere_); break;
+    case MethodKind::mesh: {
+      const Profile polyline(profile.sample(config.points));
+      geometry = newTessellatedGeometry(device, polyline, std::uint32_t(config.slices));
+      triangles_ = 2ull * polyline.segmentCount() * std::uint64_t(config.slices);
+      break;
+    }
+    default: {
+      BuildOptions options;
+      options.method = config.kind == MethodKind::linear   ? Method::linear
+                       : config.kind == MethodKind::kajiya ? Method::kajiya
+                                                           : Method::mibit;
+      options.shell = config.shell;
+      shape_ = std::make_unique<Shape>(Profile(profile.sample(config.points)), options);
+      geometry_ = std::make_unique<Geometry>(device, *shape_);
+      revolveBytes_ = shape_->memoryBytes();
+      break;
+    }
+  }
+  if (geometry != nullptr) {
+    rtcAttachGeometry(scene_, geometry);
+    rtcReleaseGeometry(geometry);  // the scene holds it
+  } else {
+    rtcAttachGeometry(scene_, geometry_->handle());
+  }
+  rtcCommitScene(scene_);
+  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  embreeBytes_ = monitor.bytes() - before;
+}
+
+TracedScene::~TracedScene() {
+  if (scene_ != nullptr) rtcReleaseScene(scene_);
+}
+
+}  // namespace revolve::bench

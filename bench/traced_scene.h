@@ -1,0 +1,66 @@
+// One method at one resolution, built into its own Embree scene: what the benchmark times.
+#pragma once
+
+#include "analytic_sphere.h"
+#include "smooth_profile.h"
+
+#include <revolve/revolve.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace revolve::bench {
+
+enum class MethodKind { mibit, linear, kajiya, mesh, sphere };
+
+struct MethodConfig {
+  MethodKind kind = MethodKind::mibit;
+  ShellKind shell = ShellKind::cylinder;  // MIBIT only
+  int points = 0;                         // profile points (not for the analytic sphere)
+  int slices = 0;                         // meshes only
+  std::string method() const;             // "mibit", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere"
+  std::string label() const;              // method and resolution, e.g. "mesh 64x128"
+};
+
+// Embree's own allocations on a device (rtcSetDeviceMemoryMonitorFunction), net of frees.
+class MemoryMonitor {
+ public:
+  explicit MemoryMonitor(RTCDevice device);
+  std::int64_t bytes() const { return bytes_.load(); }
+
+ private:
+  static bool record(void* user, ssize_t bytes, bool post);
+  std::atomic<std::int64_t> bytes_{0};
+};
+
+class TracedScene {
+ public:
+  // The analytic sphere is built from `sphere`; every other method from profile.sample(points).
+  TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const MethodConfig& config,
+              const AnalyticSphere& sphere);
+  ~TracedScene();
+  TracedScene(const TracedScene&) = delete;
+  TracedScene& operator=(const TracedScene&) = delete;
+
+  RTCScene scene() const { return scene_; }
+  const MethodConfig& config() const { return config_; }
+  double buildSeconds() const { return buildSeconds_; }
+  std::size_t revolveBytes() const { return revolveBytes_; }  // Shape::memoryBytes(); 0 for meshes
+  std::int64_t embreeBytes() const { return embreeBytes_; }   // BVH and buffers, from the monitor
+  std::uint64_t triangles() const { return triangles_; }
+
+ private:
+  MethodConfig config_;
+  std::unique_ptr<Shape> shape_;
+  std::unique_ptr<Geometry> geometry_;
+  AnalyticSphere sphere_;
+  RTCScene scene_ = nullptr;
+  double buildSeconds_ = 0.0;
+  std::size_t revolveBytes_ = 0;
+  std::int64_t embreeBytes_ = 0;
+  std::uint64_t triangles_ = 0;
+};
+
+}  // namespace revolve::bench
