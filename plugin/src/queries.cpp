@@ -1,36 +1,15 @@
-// The queries that need no Embree: nearest hit, any hit, closest point.
-#include "shape_search.h"
+// The queries that need no Embree: nearest hit and any hit (per instruction set, see
+// isa/query_kernels.h), closest point.
+#include "isa/query_kernels.h"
 #include "queries.h"
-#include "surface_hit.h"
 #include "util/azimuth.h"
+
+#include <algorithm>
 
 #include <cmath>
 
 namespace revolve {
 namespace {
-
-template <bool kCount>
-std::optional<Hit> nearestHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
-  if constexpr (kCount) ++stats.rays;
-  detail::MeridianRay meridian;
-  if (!detail::setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
-  double hi = meridian.hi;
-  detail::NearestHit<kCount> nearest{shape, meridian, hi, stats};
-  detail::searchShape<kCount>(shape, meridian, hi, nearest, stats);
-  if (!nearest.found()) return std::nullopt;
-  return detail::surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
-}
-
-template <bool kCount>
-bool anyHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
-  if constexpr (kCount) ++stats.rays;
-  detail::MeridianRay meridian;
-  if (!detail::setUpMeridianRay(shape.frame, ray, meridian)) return false;
-  double hi = meridian.hi;
-  detail::AnyHit<kCount> any{shape, meridian, stats};
-  detail::searchShape<kCount>(shape, meridian, hi, any, stats);
-  return any.found;
-}
 
 double boxDistance2(double rMin, double rMax, double zLow, double zHigh, double rho, double z) {
   const double dr = std::max({rMin - rho, 0.0, rho - rMax});
@@ -130,15 +109,11 @@ class ClosestSegment {
 }  // namespace
 
 std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
-  if (stats != nullptr) return nearestHit<true>(shape.impl(), ray, *stats);
-  Stats unused;
-  return nearestHit<false>(shape.impl(), ray, unused);
+  return detail::queryKernels().intersect(shape.impl(), ray, stats);
 }
 
 bool occluded(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
-  if (stats != nullptr) return anyHit<true>(shape.impl(), ray, *stats);
-  Stats unused;
-  return anyHit<false>(shape.impl(), ray, unused);
+  return detail::queryKernels().occluded(shape.impl(), ray, stats);
 }
 
 namespace detail {

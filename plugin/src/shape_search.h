@@ -5,6 +5,8 @@
 // the same bit for bit whichever method found it, and methods can be checked hit for hit.
 #pragma once
 
+#include "util/isa.h"
+
 #include "kajiya/strip_search.h"
 #include "kernel/segment_hits.h"
 #include "mibit/mibit_search.h"
@@ -14,6 +16,7 @@
 #include <limits>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 template <bool kCount, class VisitSegment>
 inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double& hi, VisitSegment&& visit,
@@ -79,4 +82,5 @@ struct AnyHit {
   }
 };
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

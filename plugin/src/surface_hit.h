@@ -1,6 +1,8 @@
 // From a kernel solution (s on the re-centred ray, segment k) to the caller's Hit.
 #pragma once
 
+#include "util/isa.h"
+
 #include "kernel/meridian_ray.h"
 #include "shape_impl.h"
 #include "util/azimuth.h"
@@ -10,6 +12,7 @@
 #include <numbers>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 // The caller's t for s, rounded to float and kept within [tnear, tfar] (which rounding of the
 // re-centring could otherwise leave by an ulp).
@@ -42,4 +45,5 @@ inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ra
   return hit;
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -1,11 +1,14 @@
 // Searching the strip tree in profile order through skip links (see strip_tree.h).
 #pragma once
 
+#include "util/isa.h"
+
 #include "kajiya/strip_tree.h"
 #include "kernel/meridian_ray.h"
 #include "kernel/shell_tests.h"
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 template <bool kCount>
 inline bool stripAdmits(const StripNode& node, const MeridianRay& ray, double lo, double hi, Stats& stats) noexcept {
@@ -39,4 +42,5 @@ inline void searchStripTree(const StripTree& tree, const MeridianRay& ray, doubl
   }
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

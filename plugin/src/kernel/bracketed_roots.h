@@ -8,10 +8,13 @@
 // seam is then never decided twice (see segment_hits.h).
 #pragma once
 
+#include "util/isa.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 struct Quadratic {
   double A, B, C;  // g(x) = A x^2 + 2 B x + C
@@ -63,4 +66,5 @@ inline Roots bracketedRoots(const Quadratic& g, double x0, double x1, bool insid
   return roots;
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -10,6 +10,7 @@
 
 #include <revolve/revolve.h>
 
+#include "util/isa.h"
 #include "util/rounding.h"
 
 #include <cmath>
@@ -35,6 +36,8 @@ inline ShapeFrame makeShapeFrame(double zCentre, double sphereRadius) {
   frame.bandMargin = 2.0 * std::sqrt(frame.rho2Slack) + 8.0 * kUnitRoundoff * sphereRadius;
   return frame;
 }
+
+inline namespace REVOLVE_ISA {
 
 struct MeridianRay {
   // Re-centred ray in the local frame: point(s) = origin + s * dir, |dir| = 1, s in object units.
@@ -129,4 +132,5 @@ inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRa
   return true;
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

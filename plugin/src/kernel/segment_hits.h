@@ -21,12 +21,15 @@
 // lost to cancellation (near tangency), g is expanded again about its extremum, where the roots are.
 #pragma once
 
+#include "util/isa.h"
+
 #include "kernel/bracketed_roots.h"
 #include "kernel/meridian_ray.h"
 
 #include <revolve/revolve.h>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 struct SegmentHits {
   int count = 0;
@@ -146,4 +149,5 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
   return hits;
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -8,8 +8,22 @@
 #pragma once
 
 #include "kernel/meridian_ray.h"
+#include "util/isa.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace revolve::detail {
+
+// A band between two lines of the meridian plane: wLow <= nr rho + nz z <= wHigh, with (nr, nz) a
+// unit normal and nr >= 0. A truncated-cone shell is such a band clipped to a z slab; a Ballard
+// strip is two such bands.
+struct Band {
+  double nr, nz;
+  double wLow, wHigh;
+};
+
+inline namespace REVOLVE_ISA {
 
 // Annular cylinder rMin <= rho <= rMax over [s0, s1] (already clipped to the z slab), given
 // rho^2 at both ends (q0, q1): the tree searches share these between neighbouring nodes.
@@ -25,14 +39,6 @@ inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax
 inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax, double s0, double s1) noexcept {
   return cylinderShellPasses(ray, rMin, rMax, s0, s1, ray.rho2At(s0), ray.rho2At(s1));
 }
-
-// A band between two lines of the meridian plane: wLow <= nr rho + nz z <= wHigh, with (nr, nz) a
-// unit normal and nr >= 0. A truncated-cone shell is such a band clipped to a z slab; a Ballard
-// strip is two such bands.
-struct Band {
-  double nr, nz;
-  double wLow, wHigh;
-};
 
 // The band test over [s0, s1] given rho at both ends.
 inline bool bandPasses(const MeridianRay& ray, const Band& band, double s0, double s1, double rho0, double rho1) noexcept {
@@ -54,4 +60,5 @@ inline bool bandPasses(const MeridianRay& ray, const Band& band, double s0, doub
   return bandPasses(ray, band, s0, s1, std::sqrt(ray.rho2At(s0)), std::sqrt(ray.rho2At(s1)));
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -8,6 +8,8 @@
 // vertex heights, the very ones the leaves' seam predicates use.
 #pragma once
 
+#include "util/isa.h"
+
 #include "kernel/meridian_ray.h"
 #include "kernel/shell_tests.h"
 #include "mibit/mibit_tree.h"
@@ -16,6 +18,7 @@
 #include <span>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 namespace interval_search_internal {
 
@@ -127,4 +130,5 @@ inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interv
   return false;
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

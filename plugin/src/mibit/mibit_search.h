@@ -9,12 +9,15 @@
 // before its entry, so a ray typically walks one root-to-leaf path per surface crossing.
 #pragma once
 
+#include "util/isa.h"
+
 #include "kernel/meridian_ray.h"
 #include "kernel/shell_tests.h"
 #include "mibit/interval_search.h"
 #include "mibit/mibit_tree.h"
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 // Whether the ray can meet anything under `node` within [lo, hi]; `entry` is where it would start.
 template <bool kCount>
@@ -94,4 +97,5 @@ inline void searchMibit(const MibitTree& tree, std::span<const Point2> points, b
   }
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -1,10 +1,13 @@
 // A point's distance from the z axis and the direction of its meridian plane.
 #pragma once
 
+#include "util/isa.h"
+
 #include <cmath>
 #include <limits>
 
 namespace revolve::detail {
+inline namespace REVOLVE_ISA {
 
 struct Azimuth {
   double rho;             // sqrt(x^2 + y^2)
@@ -28,4 +31,5 @@ inline Azimuth azimuthOf(double x, double y) noexcept {
   return {rho, x / rho, y / rho};
 }
 
+}  // namespace REVOLVE_ISA
 }  // namespace revolve::detail

@@ -1,0 +1,27 @@
+// What a revolve::Geometry hands Embree as its user data.
+#pragma once
+
+#include <revolve/revolve.h>
+
+#include "shape_impl.h"
+
+#include <atomic>
+#include <cstdint>
+
+namespace revolve {
+
+struct Geometry::Payload {
+  const Shape::Impl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
+  bool intersectFilter = false;
+  bool occlusionFilter = false;
+  std::atomic<std::uint64_t> rays{0}, nodesVisited{0}, shellTests{0}, quadratics{0};
+
+  void add(const Stats& stats) noexcept {
+    rays.fetch_add(stats.rays, std::memory_order_relaxed);
+    nodesVisited.fetch_add(stats.nodesVisited, std::memory_order_relaxed);
+    shellTests.fetch_add(stats.shellTests, std::memory_order_relaxed);
+    quadratics.fetch_add(stats.quadratics, std::memory_order_relaxed);
+  }
+};
+
+}  // namespace revolve

@@ -1,0 +1,196 @@
+// Embree's intersect and occluded callbacks for a revolve::Geometry: packets of 1, 4, 8 and 16
+// rays with valid masks, filter functions, instance IDs. Compiled per instruction set (util/isa.h).
+//
+// User-geometry contract (Embree 3.13): callbacks receive N = 1, 4, 8 or 16 rays in SoA layout with a
+// valid mask, rays already in object space for instanced geometry; on a hit they write tfar, Ng,
+// u, v, primID, geomID and instID[0], and nothing on a miss; occluded writes tfar = -inf. Embree
+// never calls filter functions for user geometry itself, so the callbacks call rtcFilter* per
+// candidate, passing the very `args` they received (Embree reads a hidden field behind it).
+#pragma once
+
+#include "embree/payload.h"
+#include "shape_search.h"
+#include "surface_hit.h"
+#include "util/isa.h"
+
+#include <embree3/rtcore.h>
+
+#include <limits>
+
+namespace revolve::detail {
+inline namespace REVOLVE_ISA {
+
+Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
+  return {{RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i)},
+          {RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i)},
+          RTCRayN_tnear(rays, N, i),
+          RTCRayN_tfar(rays, N, i)};
+}
+
+RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* context) noexcept {
+  RTCHit out{};
+  out.Ng_x = hit.normal.x;
+  out.Ng_y = hit.normal.y;
+  out.Ng_z = hit.normal.z;
+  out.u = hit.u;
+  out.v = hit.v;
+  out.primID = hit.segment;  // the profile segment, as documented in revolve.h
+  out.geomID = geomID;
+  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) out.instID[level] = context->instID[level];
+  return out;
+}
+
+// A one-lane view for a filter call: a valid mask with only lane i on, and an N-wide hit buffer.
+struct FilterLane {
+  alignas(64) int valid[16] = {};
+  alignas(64) float hit[16 * sizeof(RTCHit) / sizeof(float)];  // RTCHitN with stride N <= 16
+  RTCHitN* hits() noexcept { return reinterpret_cast<RTCHitN*>(hit); }
+};
+
+// Visits candidate hits of lane i in search order and offers each one, nearest first within a
+// segment, to the intersection filters; an accepted one becomes the lane's hit and lowers hi.
+template <bool kCount>
+struct FilteredNearest {
+  const RTCIntersectFunctionNArguments* args;
+  const Shape::Impl& shape;
+  const MeridianRay& ray;
+  const Ray& caller;
+  unsigned lane;
+  double& hi;
+  Stats& stats;
+  const double leafHi = hi;
+
+  std::uint32_t acceptedSegment = 0xffffffffu;
+
+  // Candidates are offered nearest first within a segment; across segments, as in NearestHit, a
+  // candidate must beat the accepted hit in (s, segment) order, so ties go to the lower segment.
+  bool operator()(std::uint32_t k) noexcept {
+    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, leafHi, stats);
+    for (int j = 0; j < hits.count; ++j) {
+      if (hits.s[j] > hi || (hits.s[j] == hi && k >= acceptedSegment)) break;
+      if (offer(surfaceHit(shape, ray, caller, hits.s[j], k))) {
+        hi = hits.s[j];
+        acceptedSegment = k;
+        break;
+      }
+    }
+    return false;
+  }
+
+  bool offer(const Hit& hit) noexcept {
+    const unsigned N = args->N;
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
+    FilterLane view;
+    view.valid[lane] = -1;
+    const RTCHit candidate = embreeHit(hit, args->geomID, args->context);
+    rtcCopyHitToHitN(view.hits(), &candidate, N, lane);
+    float& tfar = RTCRayN_tfar(rays, N, lane);
+    const float previous = tfar;
+    tfar = hit.t;  // the filter sees the candidate's distance
+    RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, rays, view.hits(), N};
+    rtcFilterIntersection(args, &filter);
+    if (view.valid[lane] != -1) {
+      tfar = previous;
+      return false;
+    }
+    const RTCHit accepted = rtcGetHitFromHitN(view.hits(), N, lane);  // the filter may have edited it
+    rtcCopyHitToHitN(RTCRayHitN_HitN(args->rayhit, N), &accepted, N, lane);
+    return true;
+  }
+};
+
+template <bool kCount>
+struct FilteredAny {
+  const RTCOccludedFunctionNArguments* args;
+  const Shape::Impl& shape;
+  const MeridianRay& ray;
+  const Ray& caller;
+  unsigned lane;
+  Stats& stats;
+  bool found = false;
+
+  bool operator()(std::uint32_t k) noexcept {
+    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, ray.hi, stats);
+    for (int j = 0; j < hits.count && !found; ++j) found = offer(surfaceHit(shape, ray, caller, hits.s[j], k));
+    return found;
+  }
+
+  bool offer(const Hit& hit) noexcept {
+    const unsigned N = args->N;
+    FilterLane view;
+    view.valid[lane] = -1;
+    const RTCHit candidate = embreeHit(hit, args->geomID, args->context);
+    rtcCopyHitToHitN(view.hits(), &candidate, N, lane);
+    float& tfar = RTCRayN_tfar(args->ray, N, lane);
+    const float previous = tfar;
+    tfar = hit.t;
+    RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, args->ray, view.hits(), N};
+    rtcFilterOcclusion(args, &filter);
+    tfar = previous;  // the caller sets -inf on acceptance
+    return view.valid[lane] == -1;
+  }
+};
+
+template <bool kCount>
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
+  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  const Shape::Impl& shape = *payload.shape;
+  const unsigned N = args->N;
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
+  const bool filtered = payload.intersectFilter || args->context->filter != nullptr;
+  Stats stats;
+  for (unsigned i = 0; i < N; ++i) {
+    if (args->valid[i] != -1) continue;
+    if constexpr (kCount) ++stats.rays;
+    const Ray ray = laneRay(rays, N, i);
+    MeridianRay meridian;
+    if (!setUpMeridianRay(shape.frame, ray, meridian)) continue;
+    double hi = meridian.hi;
+    if (filtered) {
+      FilteredNearest<kCount> visitor{args, shape, meridian, ray, i, hi, stats};
+      searchShape<kCount>(shape, meridian, hi, visitor, stats);
+      continue;
+    }
+    NearestHit<kCount> nearest{shape, meridian, hi, stats};
+    searchShape<kCount>(shape, meridian, hi, nearest, stats);
+    if (!nearest.found()) continue;
+    const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+    const RTCHit out = embreeHit(hit, args->geomID, args->context);
+    RTCRayN_tfar(rays, N, i) = hit.t;
+    rtcCopyHitToHitN(hits, &out, N, i);
+  }
+  if constexpr (kCount) payload.add(stats);
+}
+
+template <bool kCount>
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  const Shape::Impl& shape = *payload.shape;
+  const unsigned N = args->N;
+  const bool filtered = payload.occlusionFilter || args->context->filter != nullptr;
+  Stats stats;
+  for (unsigned i = 0; i < N; ++i) {
+    if (args->valid[i] != -1) continue;
+    if constexpr (kCount) ++stats.rays;
+    const Ray ray = laneRay(args->ray, N, i);
+    MeridianRay meridian;
+    if (!setUpMeridianRay(shape.frame, ray, meridian)) continue;
+    double hi = meridian.hi;
+    bool found;
+    if (filtered) {
+      FilteredAny<kCount> visitor{args, shape, meridian, ray, i, stats};
+      searchShape<kCount>(shape, meridian, hi, visitor, stats);
+      found = visitor.found;
+    } else {
+      AnyHit<kCount> any{shape, meridian, stats};
+      searchShape<kCount>(shape, meridian, hi, any, stats);
+      found = any.found;
+    }
+    if (found) RTCRayN_tfar(args->ray, N, i) = -std::numeric_limits<float>::infinity();
+  }
+  if constexpr (kCount) payload.add(stats);
+}
+
+}  // namespace REVOLVE_ISA
+}  // namespace revolve::detail

@@ -1,0 +1,58 @@
+// The per-ray entry points of one instruction set: include once, from that set's translation unit
+// (query_kernels_sse2.cpp, query_kernels_avx2.cpp), which defines its QueryKernels table from them.
+#pragma once
+
+#include "embree/ray_callbacks.h"
+#include "isa/query_kernels.h"
+#include "shape_search.h"
+#include "surface_hit.h"
+#include "util/isa.h"
+
+namespace revolve::detail {
+inline namespace REVOLVE_ISA {
+
+template <bool kCount>
+std::optional<Hit> nearestHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
+  if constexpr (kCount) ++stats.rays;
+  MeridianRay meridian;
+  if (!setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
+  double hi = meridian.hi;
+  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  searchShape<kCount>(shape, meridian, hi, nearest, stats);
+  if (!nearest.found()) return std::nullopt;
+  return surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+}
+
+template <bool kCount>
+bool anyHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
+  if constexpr (kCount) ++stats.rays;
+  MeridianRay meridian;
+  if (!setUpMeridianRay(shape.frame, ray, meridian)) return false;
+  double hi = meridian.hi;
+  AnyHit<kCount> any{shape, meridian, stats};
+  searchShape<kCount>(shape, meridian, hi, any, stats);
+  return any.found;
+}
+
+inline std::optional<Hit> intersectEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
+  if (stats != nullptr) return nearestHit<true>(shape, ray, *stats);
+  Stats unused;
+  return nearestHit<false>(shape, ray, unused);
+}
+
+inline bool occludedEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
+  if (stats != nullptr) return anyHit<true>(shape, ray, *stats);
+  Stats unused;
+  return anyHit<false>(shape, ray, unused);
+}
+
+inline constexpr QueryKernels kQueryKernels{
+    REVOLVE_ISA_NAME,
+    intersectEntry,
+    occludedEntry,
+    {intersectCallback<false>, intersectCallback<true>},
+    {occludedCallback<false>, occludedCallback<true>},
+};
+
+}  // namespace REVOLVE_ISA
+}  // namespace revolve::detail
