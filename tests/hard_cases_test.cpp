@@ -25,7 +25,8 @@ struct Variant {
 
 const Variant kVariants[] = {
     {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}},
-    {"mibit/cylinder", {Method::mibit, ShellKind::cylinder}},
+    {"mibit/cylinder (wide, the default)", {Method::mibit, ShellKind::cylinder}},
+    {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}},
     {"mibit/cone", {Method::mibit, ShellKind::cone}},
     {"linear", {Method::linear}},
     {"kajiya", {Method::kajiya}},

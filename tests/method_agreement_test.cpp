@@ -30,6 +30,7 @@ std::vector<Variant> variants() {
     all.push_back({std::string("mibit/") + name, {Method::mibit, shell}});
     all.push_back({std::string("mibit/") + name + "/no range search", {Method::mibit, shell, 0, true, false}});
   }
+  all.push_back({"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}});
   all.push_back({"mibit/hybrid/4 subdivisions", {Method::mibit, ShellKind::hybrid, 4}});
   all.push_back({"mibit/hybrid/no monotone split", {Method::mibit, ShellKind::hybrid, 0, false}});
   all.push_back({"mibit/cone/3 subdivisions, no split", {Method::mibit, ShellKind::cone, 3, false}});

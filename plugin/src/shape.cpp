@@ -54,6 +54,12 @@ Shape::Shape(Profile profile, const BuildOptions& options)
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
 
   impl.mibit = detail::buildMibitTree(impl.local, options);
+  // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
+  // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
+  if (options.method == Method::mibit && options.wideNodes && options.shell == ShellKind::cylinder &&
+      options.monotoneSplit && options.rangeSearch && options.subdivisions == 0) {
+    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame.rho2Margin);
+  }
   if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
@@ -69,6 +75,7 @@ Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 std::size_t Shape::treeNodeCount() const noexcept {
   switch (impl_->options.method) {
     case Method::mibit: {
+      if (!impl_->wide.empty()) return impl_->wide.nodes.size() + impl_->wide.leaves.size();
       // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
       // the interval's own root being its explicit leaf).
       std::size_t nodes = impl_->mibit.nodes.size();
@@ -87,7 +94,7 @@ std::size_t Shape::memoryBytes() const noexcept {
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
-         impl.strips.nodes.capacity() * sizeof(detail::StripNode) +
+         impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
          impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
 }
 

@@ -6,6 +6,7 @@
 #include "kajiya/strip_tree.h"
 #include "kernel/meridian_ray.h"
 #include "mibit/mibit_tree.h"
+#include "mibit/wide_tree.h"
 
 #include <vector>
 
@@ -18,7 +19,8 @@ struct Shape::Impl {
   BuildOptions options;
   detail::ShapeFrame frame;
   std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)
-  detail::MibitTree mibit;      // always built: it also serves closest-point queries
+  detail::MibitTree mibit;      // always built: it also serves closest-point queries and in-plane rays
+  detail::WideTree wide;        // the SIMD layout, for the default options (BuildOptions::wideNodes)
   detail::StripTree strips;     // built for Method::kajiya only
   Bounds bounds;
 };

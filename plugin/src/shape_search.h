@@ -10,6 +10,7 @@
 #include "kajiya/strip_search.h"
 #include "kernel/segment_hits.h"
 #include "mibit/mibit_search.h"
+#include "mibit/wide_search.h"
 #include "shape_impl.h"
 
 #include <cstdint>
@@ -23,7 +24,11 @@ inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double
                         Stats& stats) noexcept {
   switch (shape.options.method) {
     case Method::mibit:
-      searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
+      if (!shape.wide.empty() && !ray.inPlane) {
+        searchWide<kCount>(shape.wide, ray, hi, visit, stats);
+      } else {
+        searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
+      }
       break;
     case Method::kajiya: searchStripTree<kCount>(shape.strips, ray, hi, visit, stats); break;
     case Method::linear: {

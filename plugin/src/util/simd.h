@@ -1,0 +1,56 @@
+// The few SIMD operations the wide MIBIT search needs, on doubles, at the native width of the
+// instruction set a translation unit is compiled for (util/isa.h): 4 lanes with AVX2, 2 with
+// SSE2. Lane operations are the scalar IEEE operations, so results do not depend on the width.
+#pragma once
+
+#include "util/isa.h"
+
+#include <immintrin.h>
+
+namespace revolve::detail {
+inline namespace REVOLVE_ISA {
+
+#if defined(__AVX2__)
+inline constexpr int kLanes = 4;
+using NativeDouble = __m256d;
+#define REVOLVE_SIMD(op) _mm256_##op##_pd
+#else
+inline constexpr int kLanes = 2;
+using NativeDouble = __m128d;
+#define REVOLVE_SIMD(op) _mm_##op##_pd
+#endif
+
+struct Lanes {
+  NativeDouble v;
+};
+// A comparison's result: all bits set in the lanes where it holds.
+struct LaneMask {
+  NativeDouble v;
+};
+
+[[gnu::always_inline]] inline Lanes load(const double* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
+[[gnu::always_inline]] inline void store(double* p, Lanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
+[[gnu::always_inline]] inline Lanes splat(double x) noexcept { return {REVOLVE_SIMD(set1)(x)}; }
+[[gnu::always_inline]] inline Lanes operator+(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(add)(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes operator-(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(sub)(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes operator*(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(mul)(a.v, b.v)}; }
+// min and max as minsd / maxsd compute them; no operand here is ever NaN.
+[[gnu::always_inline]] inline Lanes min(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes max(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
+[[gnu::always_inline]] inline LaneMask operator&(LaneMask a, LaneMask b) noexcept { return {REVOLVE_SIMD(and)(a.v, b.v)}; }
+[[gnu::always_inline]] inline LaneMask operator|(LaneMask a, LaneMask b) noexcept { return {REVOLVE_SIMD(or)(a.v, b.v)}; }
+
+#if defined(__AVX2__)
+[[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
+[[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
+#else
+[[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept { return {_mm_cmplt_pd(a.v, b.v)}; }
+[[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept { return {_mm_cmple_pd(a.v, b.v)}; }
+#endif
+// Bit i set when lane i holds.
+[[gnu::always_inline]] inline unsigned bits(LaneMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
+
+#undef REVOLVE_SIMD
+
+}  // namespace REVOLVE_ISA
+}  // namespace revolve::detail
