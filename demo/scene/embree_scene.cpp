@@ -13,10 +13,6 @@
 
 namespace revolve::scene {
 
-using app::operator+;
-using app::operator-;
-using app::operator*;
-
 namespace {
 
 constexpr double kUnitRoundoff = 0x1p-24;  // float's u
