@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev
+  libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev libopenimageio-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(libgtest-dev libgmock-dev clang libclang-rt-14-dev)

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The main job: install, build, and trace the bundled example (a hollow vase seen by a 48 x 48
-# camera) through Embree, writing out/vase_hits.csv.
+# The main job: install, build, and render the paper's patio scene (scenes/patio.json: one hundred
+# surfaces of revolution, path traced under a sun and a sky) to out/patio.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 mkdir -p out
-build/bin/revolve-trace --profile examples/vase.csv --rays examples/vase_rays.csv --out out/vase_hits.csv
-awk -F, 'NR > 1 { rays++; hits += $1 } END { printf "traced %d rays: %d hits; wrote out/vase_hits.csv\n", rays, hits }' out/vase_hits.csv
+build/bin/revolve-render scenes/patio.json -o out/patio.png --stats out/patio_stats.json
+echo "wrote out/patio.png ($(grep -o '"render_seconds": [0-9.]*' out/patio_stats.json | cut -d' ' -f2) s of rendering)"

@@ -283,4 +283,46 @@ RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std
 // that radius lies on a vertical segment (elsewhere the gap normal to the surface is smaller).
 double tessellationError(const Profile& profile, std::uint32_t slices);
 
+// ---------------------------------------------------------------------------------------------
+// Smooth shading normals.
+
+// Per-vertex normals of a profile for smooth shading: the geometry stays exact (hits, Ng), only
+// the normal used for shading varies smoothly across the vertex circles where the profile turns by
+// at most a crease angle. Elsewhere (a rim, the edge of a base) each segment keeps its own normal,
+// so sharp edges stay sharp.
+//
+// A vertex normal is that of the circle through the vertex and its two neighbours: the two
+// segments' unit normals each weighted by the other segment's length. A polyline inscribed in a
+// circle (a sphere's profile, evenly sampled or not) thus gets the circle's normals at its
+// vertices, and since a chord point (1 - s) p0 + s p1 then has the direction (1 - s) n0 + s n1
+// from the centre, normalised linear interpolation gives the sphere's normal everywhere on the
+// polyline, up to rounding. An end of the profile on the axis has the segment's mirror image as its
+// neighbour (smooth there gives the axis direction, a pole; a crease, a cone's tip); a closed loop
+// joins its last segment to its first. Normals lie on the side of Ng (see Conventions).
+class ShadingNormals {
+ public:
+  // A typical crease angle: smooths curves sampled at up to 30 degrees a segment.
+  static constexpr double kDefaultCreaseDegrees = 30.0;
+
+  // Throws std::invalid_argument unless 0 <= creaseDegrees <= 180 (0: every vertex is a crease,
+  // flat shading; 180: nothing is).
+  ShadingNormals(const Profile& profile, double creaseDegrees);
+
+  // Unit object-space shading normal at a hit on `segment` (Embree's primID) with surface
+  // parameters u, v (see Conventions; v is clamped to the segment). The azimuth comes from u, not
+  // from a normal, so discs (whose geometric normal is the axis) shade right too. Precondition:
+  // segment < the profile's segment count.
+  Vec3 normal(std::uint32_t segment, float u, float v) const noexcept;
+
+  std::size_t segmentCount() const noexcept { return segmentStart_.size(); }
+  std::size_t memoryBytes() const noexcept;
+
+ private:
+  struct Meridian {  // a normal in the (r, z) half-plane, unit length
+    double r, z;
+  };
+  std::vector<Meridian> startNormal_, endNormal_;  // at each segment's first and second point
+  std::vector<double> segmentStart_, segmentLength_;  // in units of the total arc length
+};
+
 }  // namespace revolve

@@ -1,0 +1,121 @@
+#include "integrators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace revolve::render {
+
+using namespace app;
+
+namespace {
+
+struct ShadingFrame {
+  Vec3 wo, shading, geometric;
+  bool outside;  // wo on the side the surface's own normal points to
+};
+
+// Both normals turned to the viewer's side (surfaces are two-sided), and a shading normal that
+// faces away from the viewer (possible near silhouettes) replaced by the geometric one. Glass keeps
+// its orientation: it needs to know whether the ray enters or leaves.
+ShadingFrame shadingFrame(const scene::WorldHit& hit, Vec3 rayDirection, bool glass) {
+  ShadingFrame f;
+  f.wo = -normalize(rayDirection);
+  f.geometric = hit.geometricNormal;
+  f.shading = hit.shadingNormal;
+  f.outside = dot(f.wo, f.geometric) >= 0;
+  if (glass) return f;
+  if (!f.outside) f.geometric = -f.geometric, f.shading = -f.shading;
+  if (dot(f.shading, f.wo) <= 0) f.shading = f.geometric;
+  return f;
+}
+
+}  // namespace
+
+Color Integrator::radiance(const Ray& cameraRay, RandomStream& random, RayCounts& counts) const {
+  ++counts.camera;
+  if (settings_.kind == IntegratorKind::whitted) return whitted(cameraRay, 1, random, counts);
+  return path(cameraRay, random, counts);
+}
+
+Color Integrator::direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,
+                         bool shadowRays, RandomStream& random, RayCounts& counts) const {
+  Color sum;
+  for (std::size_t i = 0; i < lights_.count(); ++i) {
+    const LightSample light = lights_.sample(i, hit.point, random);
+    const Color f = material.evaluate(wo, light.wi, shading, geometric);
+    if (f.black() || light.irradiance.black()) continue;
+    if (shadowRays) {
+      Ray shadow;
+      shadow.origin = scene_.spawn(hit, light.wi);
+      // To a point light: the segment up to it (t in units of the unnormalised direction); to the sun: the whole ray.
+      shadow.direction = light.atInfinity ? light.wi : light.position - shadow.origin;
+      shadow.tfar = light.atInfinity ? std::numeric_limits<float>::infinity() : 1.0f;
+      ++counts.shadow;
+      if (scene_.occluded(shadow)) continue;
+    }
+    sum += f * light.irradiance;
+  }
+  return sum;
+}
+
+Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
+  Color radiance, throughput{1, 1, 1};
+  for (int hits = 1;; ++hits) {
+    const std::optional<scene::WorldHit> hit = scene_.intersect(ray);
+    if (!hit) {
+      radiance += throughput * lights_.environment(normalize(ray.direction));
+      break;
+    }
+    const Material& material = materials_[hit->material];
+    const ShadingFrame f = shadingFrame(*hit, ray.direction, material.type() == io::MaterialType::glass);
+    if (material.hasSmoothLobe()) {
+      radiance += throughput * direct(*hit, material, f.wo, f.shading, f.geometric, true, random, counts);
+    }
+    if (hits >= settings_.depth) break;
+    const std::optional<ScatterSample> scatter = material.sample(f.wo, f.shading, f.geometric, f.outside, random);
+    if (!scatter) break;
+    throughput = throughput * scatter->weight;
+    if (hits >= settings_.rouletteAfter) {
+      // Continue with probability q, weighting survivors by 1 / q: unbiased, and a dim path ends early.
+      const float q = std::min(throughput.max(), 0.95f);
+      if (!(random.next() < q)) break;
+      throughput = (1 / q) * throughput;
+    }
+    ray = Ray{scene_.spawn(*hit, scatter->wi), scatter->wi};
+    ++counts.bounce;
+  }
+  return radiance;
+}
+
+Color Integrator::whitted(const Ray& ray, int level, RandomStream& random, RayCounts& counts) const {
+  const std::optional<scene::WorldHit> hit = scene_.intersect(ray);
+  if (!hit) return lights_.environment(normalize(ray.direction));
+  const Material& material = materials_[hit->material];
+  const bool glass = material.type() == io::MaterialType::glass;
+  const ShadingFrame f = shadingFrame(*hit, ray.direction, glass);
+  Color radiance;
+  if (material.hasSmoothLobe()) {
+    radiance += direct(*hit, material, f.wo, f.shading, f.geometric, settings_.shadows, random, counts);
+    // The classic ambient term: diffuse surfaces take the environment seen along their normal.
+    if (material.type() == io::MaterialType::diffuse) radiance += material.color() * lights_.environment(f.shading);
+  }
+  if (level >= settings_.depth) return radiance;
+  const auto trace = [&](Vec3 direction) {
+    ++counts.bounce;
+    return whitted(Ray{scene_.spawn(*hit, direction), direction}, level + 1, random, counts);
+  };
+  if (glass) {
+    const Material::Split split = material.glassSplit(f.wo, f.shading, f.outside);
+    const Vec3 n = dot(f.wo, f.shading) >= 0 ? f.shading : -f.shading;
+    const Vec3 reflected = reflect(f.wo, n);
+    if (split.reflectance > 0) radiance += split.reflectance * trace(reflected);
+    if (split.refracted) radiance += (1 - split.reflectance) * (material.tint() * trace(*split.refracted));
+  } else if (material.type() != io::MaterialType::diffuse) {
+    const Vec3 reflected = reflect(f.wo, f.shading);
+    if (dot(reflected, f.geometric) > 0) radiance += material.specularReflectance(f.wo, f.shading) * trace(reflected);
+  }
+  return radiance;
+}
+
+}  // namespace revolve::render

@@ -1,0 +1,54 @@
+// Radiance along a camera ray: unidirectional path tracing, or the paper's Whitted ray tracer.
+#pragma once
+
+#include "color.h"
+#include "lights.h"
+#include "materials.h"
+#include "random_stream.h"
+#include "scene/embree_scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace revolve::render {
+
+enum class IntegratorKind { path, whitted };
+
+struct RayCounts {
+  std::uint64_t camera = 0, bounce = 0, shadow = 0;
+  RayCounts& operator+=(const RayCounts& o) {
+    camera += o.camera, bounce += o.bounce, shadow += o.shadow;
+    return *this;
+  }
+};
+
+struct IntegratorSettings {
+  IntegratorKind kind = IntegratorKind::path;
+  int depth = 8;         // path: most surface hits a path has; whitted: ray levels (1 = ray casting)
+  bool shadows = true;   // whitted: shadow rays to the lights (off: the paper's Example 1)
+  int rouletteAfter = 3;  // path: Russian roulette from this many hits on
+};
+
+class Integrator {
+ public:
+  Integrator(const scene::EmbreeScene& scene, const std::vector<Material>& materials, const Lights& lights,
+             const IntegratorSettings& settings)
+      : scene_(scene), materials_(materials), lights_(lights), settings_(settings) {}
+
+  // Never allocates, throws or locks.
+  Color radiance(const Ray& cameraRay, RandomStream& random, RayCounts& counts) const;
+
+ private:
+  Color path(Ray ray, RandomStream& random, RayCounts& counts) const;
+  Color whitted(const Ray& ray, int level, RandomStream& random, RayCounts& counts) const;
+  // Light arriving from every light at a hit, times f cos: next-event estimation.
+  Color direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,
+               bool shadowRays, RandomStream& random, RayCounts& counts) const;
+
+  const scene::EmbreeScene& scene_;
+  const std::vector<Material>& materials_;
+  const Lights& lights_;
+  IntegratorSettings settings_;
+};
+
+}  // namespace revolve::render

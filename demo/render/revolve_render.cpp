@@ -1,0 +1,137 @@
+// revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
+// ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
+// for comparison). Options and the scene format are documented in README.md.
+#include "image_output.h"
+#include "io/scene_file.h"
+#include "io/text_files.h"
+#include "progress.h"
+#include "renderer.h"
+#include "scene/embree_scene.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <tbb/info.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using namespace revolve;
+
+struct Options {
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats;
+  int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
+  std::uint32_t subdivisions = 0, slices = 64;
+  std::uint64_t seed = 1;
+  bool noMonotoneSplit = false, noRangeSearch = false, noShadows = false;
+};
+
+scene::BuildSettings buildSettings(const Options& options) {
+  scene::BuildSettings build;
+  build.mesh = options.geometry == "mesh";
+  build.slices = options.slices;
+  build.options.method = options.geometry == "linear" ? Method::linear : options.geometry == "kajiya" ? Method::kajiya : Method::mibit;
+  build.options.shell = options.shell == "cone" ? ShellKind::cone : options.shell == "hybrid" ? ShellKind::hybrid : ShellKind::cylinder;
+  build.options.subdivisions = options.subdivisions;
+  build.options.monotoneSplit = !options.noMonotoneSplit;
+  build.options.rangeSearch = !options.noRangeSearch;
+  build.countStats = !options.stats.empty();
+  return build;
+}
+
+void writeStats(const Options& options, const render::RenderSettings& settings, const scene::EmbreeScene& built,
+                const render::RenderResult& result, std::size_t objects) {
+  const std::uint64_t total = result.rays.camera + result.rays.bounce + result.rays.shadow;
+  const Stats mibit = built.stats();
+  nlohmann::ordered_json json;
+  json["scene"] = options.scene;
+  json["image"] = {{"width", settings.width}, {"height", settings.height}};
+  json["spp"] = settings.spp;
+  json["integrator"] = options.integrator;
+  json["depth"] = settings.integrator.depth;
+  json["seed"] = settings.seed;
+  json["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+  json["geometry"] = options.geometry;
+  json["objects"] = objects;
+  json["distinct_profiles"] = built.prototypeCount();
+  json["build_seconds"] = built.buildSeconds();
+  json["render_seconds"] = result.seconds;
+  json["rays"] = {{"camera", result.rays.camera}, {"bounce", result.rays.bounce}, {"shadow", result.rays.shadow}, {"total", total}};
+  json["mrays_per_second"] = result.seconds > 0 ? double(total) / result.seconds * 1e-6 : 0.0;
+  json["mibit"] = {{"queries", mibit.rays}, {"nodes_visited", mibit.nodesVisited}, {"shell_tests", mibit.shellTests},
+                   {"quadratics", mibit.quadratics}};
+  json["memory"] = {{"revolve_bytes", built.revolveBytes()}, {"embree_bytes", built.embreeBytes()},
+                    {"embree_peak_bytes", built.embreePeakBytes()}};
+  const std::string text = json.dump(2) + "\n";
+  io::writeFileAtomically(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+}
+
+void run(const Options& options) {
+  const std::string output =
+      !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
+  render::imageFormatFor(output);  // an unknown extension fails before any work
+  const io::SceneDescription description = io::readScene(options.scene);
+  for (const io::SceneProfile& profile : description.profiles) {
+    for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  }
+  render::checkWritable(output);
+  if (!options.stats.empty()) render::checkWritable(options.stats);
+
+  render::RenderSettings settings;
+  settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
+  settings.height = options.height > 0 ? options.height : description.camera.height.value_or(480);
+  settings.spp = options.spp > 0 ? options.spp : description.camera.spp.value_or(16);
+  settings.seed = options.seed;
+  settings.threads = options.threads;
+  settings.integrator.kind = options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
+  settings.integrator.depth = options.depth > 0 ? options.depth : (options.integrator == "whitted" ? 4 : 8);
+  settings.integrator.shadows = !options.noShadows;
+
+  const scene::EmbreeScene built(description, buildSettings(options));
+  render::ProgressReport progress;
+  const render::RenderResult result =
+      render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
+  progress.finish();
+  render::writeImage(output, result.image);
+  if (!options.stats.empty()) writeStats(options, settings, built, result, description.objects.size());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Renders a scene of surfaces of revolution (JSON scene file) with path tracing or Whitted ray "
+               "tracing through Embree, every surface traced exactly by revolve."};
+  app.add_option("scene", options.scene, "scene file (JSON)")->required();
+  app.add_option("-o,--output", options.output, "image to write: .png (8-bit sRGB) or .exr (linear half); default: <scene name>.png");
+  app.add_option("--width", options.width, "image width in pixels (default: the scene's camera.width, else 640)")->check(CLI::Range(1, 16384));
+  app.add_option("--height", options.height, "image height in pixels (default: camera.height, else 480)")->check(CLI::Range(1, 16384));
+  app.add_option("--spp", options.spp, "samples per pixel (default: camera.spp, else 16)")->check(CLI::Range(1, 1 << 20));
+  app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the paper's ray tracer")
+      ->check(CLI::IsMember({"path", "whitted"}))
+      ->capture_default_str();
+  app.add_option("--depth", options.depth, "path: most surface hits a path has (default 8); whitted: ray levels, 1 = ray casting (default 4)")
+      ->check(CLI::Range(1, 64));
+  app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
+  app.add_option("--geometry", options.geometry, "how surfaces of revolution are traced (mesh: tessellated with --slices)")
+      ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
+      ->capture_default_str();
+  app.add_option("--shell", options.shell, "MIBIT bounding shells")->check(CLI::IsMember({"cylinder", "cone", "hybrid"}))->capture_default_str();
+  app.add_flag("--no-monotone-split", options.noMonotoneSplit, "MIBIT: refine each profile as one interval");
+  app.add_flag("--no-range-search", options.noRangeSearch, "MIBIT: test every node's shell");
+  app.add_option("--subdivisions", options.subdivisions, "MIBIT leaves per monotone interval (0: one segment a leaf)")->capture_default_str();
+  app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")->check(CLI::Range(3u, 1u << 16))->capture_default_str();
+  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
+  app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")->capture_default_str();
+  app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    run(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "revolve-render: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

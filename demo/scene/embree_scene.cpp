@@ -1,0 +1,362 @@
+#include "scene/embree_scene.h"
+
+#include "common/vector_math.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace revolve::scene {
+
+namespace {
+
+constexpr double kUnitRoundoff = 0x1p-24;  // float's u
+// pbrt-v4's gamma(n) = n u / (1 - n u): the relative error bound of n float operations.
+constexpr double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
+
+struct Matrix3 {
+  double m[3][3];
+  Vec3 apply(Vec3 v) const {
+    return {float(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z), float(m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z),
+            float(m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z)};
+  }
+  // |M| |v| per row: bounds on how an error vector (or a magnitude) maps through M.
+  Vec3 applyAbsolute(Vec3 v) const {
+    return {float(std::abs(m[0][0]) * v.x + std::abs(m[0][1]) * v.y + std::abs(m[0][2]) * v.z),
+            float(std::abs(m[1][0]) * v.x + std::abs(m[1][1]) * v.y + std::abs(m[1][2]) * v.z),
+            float(std::abs(m[2][0]) * v.x + std::abs(m[2][1]) * v.y + std::abs(m[2][2]) * v.z)};
+  }
+  double infinityNorm() const {
+    double worst = 0;
+    for (const auto& row : m) worst = std::max(worst, std::abs(row[0]) + std::abs(row[1]) + std::abs(row[2]));
+    return worst;
+  }
+};
+
+Matrix3 inverse(const Matrix3& a) {
+  const auto& m = a.m;
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  Matrix3 r;
+  r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
+  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
+  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
+  r.m[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / det;
+  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
+  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
+  r.m[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / det;
+  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
+  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
+  return r;
+}
+
+// rotate(axis, degrees) * scale, rounded to the floats Embree will use.
+Matrix3 linearPart(const io::SceneTransform& transform) {
+  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
+  const double c = std::cos(theta), s = std::sin(theta);
+  const auto& k = transform.rotateAxis;
+  const double rotation[3][3] = {
+      {c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
+      {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
+      {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
+  Matrix3 m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m.m[i][j] = float(rotation[i][j] * transform.scale[j]);
+  }
+  return m;
+}
+
+Vec3 toVec3(const io::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+
+float awayFrom(float value, float offset) {
+  if (offset > 0) return std::nextafter(value, std::numeric_limits<float>::infinity());
+  if (offset < 0) return std::nextafter(value, -std::numeric_limits<float>::infinity());
+  return value;
+}
+
+// Moves p along unit n by `distance` to the side `direction` lies on, rounding away from p so
+// that rounding cannot undo the move (as pbrt-v4's OffsetRayOrigin).
+Vec3 pushAlongNormal(Vec3 p, Vec3 n, float distance, Vec3 direction) {
+  if (app::dot(n, direction) < 0) distance = -distance;
+  const Vec3 offset = distance * n;
+  return {awayFrom(p.x + offset.x, offset.x), awayFrom(p.y + offset.y, offset.y), awayFrom(p.z + offset.z, offset.z)};
+}
+
+RTCRayHit embreeRay(const Ray& ray) {
+  RTCRayHit rayHit{};
+  rayHit.ray.org_x = ray.origin.x;
+  rayHit.ray.org_y = ray.origin.y;
+  rayHit.ray.org_z = ray.origin.z;
+  rayHit.ray.dir_x = ray.direction.x;
+  rayHit.ray.dir_y = ray.direction.y;
+  rayHit.ray.dir_z = ray.direction.z;
+  rayHit.ray.tnear = ray.tnear;
+  rayHit.ray.tfar = ray.tfar;
+  rayHit.ray.mask = ~0u;
+  rayHit.ray.flags = 0;
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rayHit;
+}
+
+}  // namespace
+
+struct EmbreeScene::Prototype {
+  Profile profile;
+  ShadingNormals normals;
+  std::optional<Shape> shape;
+  std::optional<Geometry> geometry;
+  RTCGeometry mesh = nullptr;  // retained while the prototype lives
+  const float* meshVertices = nullptr;
+  const std::uint32_t* meshIndices = nullptr;
+  std::uint32_t slices = 0;
+  app::Scene scene;
+
+  Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
+      : profile(source.profile), normals(source.profile, source.creaseDegrees), scene(app::newScene(device)) {
+    if (settings.mesh) {
+      slices = settings.slices;
+      mesh = newTessellatedGeometry(device, profile, slices);
+      meshVertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_VERTEX, 0));
+      meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_INDEX, 0));
+      if (meshVertices == nullptr || meshIndices == nullptr) throw std::runtime_error("Embree gave no mesh buffers");
+      rtcAttachGeometry(scene.get(), mesh);
+    } else {
+      shape.emplace(profile, settings.options);
+      geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
+      rtcAttachGeometry(scene.get(), geometry->handle());
+    }
+    rtcCommitScene(scene.get());
+  }
+  ~Prototype() {
+    if (mesh != nullptr) rtcReleaseGeometry(mesh);
+  }
+  Prototype(const Prototype&) = delete;
+  Prototype& operator=(const Prototype&) = delete;
+};
+
+struct EmbreeScene::Instance {
+  std::uint32_t prototype = 0, material = 0;
+  Matrix3 linear{}, normalMatrix{};  // object to world, and its inverse transpose for normals
+  Vec3 translate{};
+  // Embree maps the world ray into object space in float: o' = L^-1 (o - T), d' = L^-1 d, each
+  // component within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d|. Mapped back through L, the
+  // exact hit of that ray lies within gamma(3) |L| |L^-1| (|o| + |T| + |t d|) of the world ray's
+  // (infinity norms); this is that factor, gamma(3) |L| |L^-1|, with room (gamma(4)).
+  float transformErrorFactor = 0;
+};
+
+EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings)
+    : memory_(std::make_unique<MemoryCounter>()), device_(app::newDevice()) {
+  const auto start = std::chrono::steady_clock::now();
+  rtcSetDeviceMemoryMonitorFunction(
+      device_.get(),
+      [](void* user, ssize_t bytes, bool) {
+        auto* counter = static_cast<MemoryCounter*>(user);
+        const std::int64_t now = counter->current.fetch_add(bytes) + bytes;
+        std::int64_t peak = counter->peak.load();
+        while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {
+        }
+        return true;
+      },
+      memory_.get());
+
+  // Each profile used by an object is built once (in parallel: shapes are independent).
+  std::vector<std::int64_t> prototypeOf(description.profiles.size(), -1);
+  std::vector<std::size_t> used;
+  for (const io::SceneObject& object : description.objects) {
+    if (prototypeOf[object.profile] < 0) {
+      prototypeOf[object.profile] = std::int64_t(used.size());
+      used.push_back(object.profile);
+    }
+  }
+  prototypes_.resize(used.size());
+  tbb::parallel_for(std::size_t{0}, used.size(), [&](std::size_t i) {
+    prototypes_[i] = std::make_unique<Prototype>(description.profiles[used[i]], device_.get(), settings);
+  });
+
+  top_ = app::newScene(device_.get());
+  instances_.reserve(description.objects.size());
+  for (std::size_t i = 0; i < description.objects.size(); ++i) {
+    const io::SceneObject& object = description.objects[i];
+    Instance instance;
+    instance.prototype = std::uint32_t(prototypeOf[object.profile]);
+    instance.material = std::uint32_t(object.material);
+    instance.linear = linearPart(object.transform);
+    const Matrix3 inv = inverse(instance.linear);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) instance.normalMatrix.m[r][c] = inv.m[c][r];
+    }
+    instance.translate = toVec3(object.transform.translate);
+    instance.transformErrorFactor = float(gamma(4) * instance.linear.infinityNorm() * inv.infinityNorm());
+    float columns[12];
+    for (int c = 0; c < 3; ++c) {
+      for (int r = 0; r < 3; ++r) columns[3 * c + r] = float(instance.linear.m[r][c]);
+    }
+    columns[9] = instance.translate.x;
+    columns[10] = instance.translate.y;
+    columns[11] = instance.translate.z;
+    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, prototypes_[instance.prototype]->scene.get());
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(top_.get(), geometry, unsigned(i));
+    rtcReleaseGeometry(geometry);
+    instances_.push_back(instance);
+  }
+
+  if (!description.quads.empty()) {
+    RTCGeometry triangles = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), 4 * description.quads.size()));
+    auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                        3 * sizeof(std::uint32_t), 2 * description.quads.size()));
+    for (std::size_t q = 0; q < description.quads.size(); ++q) {
+      const io::SceneQuad& quad = description.quads[q];
+      for (int c = 0; c < 4; ++c) {
+        const Vec3 v = toVec3(quad.corners[c]);
+        quadVertices_.push_back(v);
+        vertices[3 * (4 * q + c) + 0] = v.x;
+        vertices[3 * (4 * q + c) + 1] = v.y;
+        vertices[3 * (4 * q + c) + 2] = v.z;
+      }
+      const std::uint32_t base = std::uint32_t(4 * q);
+      const std::uint32_t triangle[6] = {base, base + 1, base + 2, base, base + 2, base + 3};
+      std::copy(triangle, triangle + 6, indices + 6 * q);
+      quadMaterials_.push_back(std::uint32_t(quad.material));
+    }
+    rtcCommitGeometry(triangles);
+    rtcAttachGeometryByID(top_.get(), triangles, unsigned(description.objects.size()));
+    rtcReleaseGeometry(triangles);
+  }
+  rtcCommitScene(top_.get());
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+EmbreeScene::~EmbreeScene() {
+  top_.reset();
+  prototypes_.clear();
+}
+
+std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit = embreeRay(ray);
+  rtcIntersect1(top_.get(), &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const noexcept {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay shadow = embreeRay(ray).ray;
+  rtcOccluded1(top_.get(), &context, &shadow);
+  return shadow.tfar == -std::numeric_limits<float>::infinity();
+}
+
+std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
+  const Instance& instance = instances_[rayHit.hit.instID[0]];
+  const Prototype& prototype = *prototypes_[instance.prototype];
+  WorldHit hit;
+  hit.t = rayHit.ray.tfar;
+  hit.ray = ray;
+  hit.material = instance.material;
+  hit.object = rayHit.hit.instID[0];
+  Vec3 objectNormal, shadingNormal;
+  if (prototype.mesh == nullptr) {
+    // Exact surface: Ng, u, v and primID in revolve's conventions (object space).
+    hit.exactSurface = true;
+    hit.point = ray.origin + hit.t * ray.direction;
+    objectNormal = {rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
+    shadingNormal = prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
+    const Vec3 magnitude = app::absolute(ray.origin) + app::absolute(instance.translate) + app::absolute(hit.t * ray.direction);
+    hit.transformError = instance.transformErrorFactor * app::maxComponent(magnitude);
+  } else {
+    // Mesh: the point from the triangle's barycentrics (pbrt-v4: within gamma(7) sum |b_i p_i|),
+    // then revolve's segment, u and v recovered from it so that shading matches the exact surface.
+    const std::uint32_t* index = prototype.meshIndices + 3 * rayHit.hit.primID;
+    const auto vertex = [&](int k) {
+      const float* v = prototype.meshVertices + 3 * index[k];
+      return Vec3{v[0], v[1], v[2]};
+    };
+    const Vec3 p0 = vertex(0), p1 = vertex(1), p2 = vertex(2);
+    const float b1 = rayHit.hit.u, b2 = rayHit.hit.v, b0 = 1 - b1 - b2;
+    const Vec3 local = b0 * p0 + b1 * p1 + b2 * p2;
+    const Vec3 localError = float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
+    objectNormal = app::cross(p1 - p0, p2 - p0);  // outwards for a profile listed bottom to top, as Ng
+    const std::uint32_t segment = rayHit.hit.primID / (2 * prototype.slices);
+    const double uTurns = std::atan2(double(local.y), double(local.x)) * (0.5 / std::numbers::pi);
+    const float u = float(uTurns < 0 ? uTurns + 1 : uTurns);
+    const Point2 a = prototype.profile.points()[segment], b = prototype.profile.points()[segment + 1];
+    const double rho = std::hypot(double(local.x), double(local.y));
+    const double er = b.r - a.r, ez = b.z - a.z;
+    const double along = std::clamp(((rho - a.r) * er + (local.z - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
+    const std::span<const double> arc = prototype.profile.arcLength();
+    const float v = float((arc[segment] + along * (arc[segment + 1] - arc[segment])) / arc.back());
+    shadingNormal = prototype.normals.normal(segment, u, v);
+    // World point L p + T: its own rounding (gamma(3) (|L| |p| + |T|)) plus the object error through |L|.
+    hit.point = instance.linear.apply(local) + instance.translate;
+    hit.pointError = instance.linear.applyAbsolute(localError) +
+                     float(gamma(3)) * (instance.linear.applyAbsolute(app::absolute(local)) + app::absolute(instance.translate));
+  }
+  hit.geometricNormal = app::normalize(instance.normalMatrix.apply(objectNormal));
+  hit.shadingNormal = app::normalize(instance.normalMatrix.apply(shadingNormal));
+  return hit;
+}
+
+std::optional<WorldHit> EmbreeScene::quadHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
+  const std::uint32_t quad = rayHit.hit.primID / 2;
+  const Vec3* corner = quadVertices_.data() + 4 * quad;
+  const bool second = rayHit.hit.primID % 2 == 1;
+  const Vec3 p0 = corner[0], p1 = second ? corner[2] : corner[1], p2 = second ? corner[3] : corner[2];
+  const float b1 = rayHit.hit.u, b2 = rayHit.hit.v, b0 = 1 - b1 - b2;
+  WorldHit hit;
+  hit.t = rayHit.ray.tfar;
+  hit.ray = ray;
+  hit.material = quadMaterials_[quad];
+  hit.object = std::uint32_t(instances_.size() + quad);
+  hit.point = b0 * p0 + b1 * p1 + b2 * p2;
+  hit.pointError = float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
+  hit.geometricNormal = app::normalize(app::cross(p1 - p0, p2 - p0));
+  hit.shadingNormal = hit.geometricNormal;
+  return hit;
+}
+
+Vec3 EmbreeScene::spawn(const WorldHit& hit, Vec3 direction) const noexcept {
+  if (hit.exactSurface) {
+    const Vec3 p = offsetRayOrigin(hit.ray, hit.t, hit.geometricNormal, direction);
+    return pushAlongNormal(p, hit.geometricNormal, hit.transformError, direction);
+  }
+  // The error box's extent along the normal: sum |n_i| e_i.
+  const float distance = app::dot(app::absolute(hit.geometricNormal), hit.pointError);
+  return pushAlongNormal(hit.point, hit.geometricNormal, distance, direction);
+}
+
+Stats EmbreeScene::stats() const noexcept {
+  Stats total;
+  for (const auto& prototype : prototypes_) {
+    if (prototype->geometry) total += prototype->geometry->stats();
+  }
+  return total;
+}
+
+std::size_t EmbreeScene::revolveBytes() const noexcept {
+  std::size_t bytes = 0;
+  for (const auto& prototype : prototypes_) {
+    bytes += prototype->normals.memoryBytes();
+    if (prototype->shape) bytes += prototype->shape->memoryBytes();
+  }
+  return bytes;
+}
+
+std::int64_t EmbreeScene::embreeBytes() const noexcept { return memory_->current.load(); }
+std::int64_t EmbreeScene::embreePeakBytes() const noexcept { return memory_->peak.load(); }
+
+}  // namespace revolve::scene

@@ -1,0 +1,90 @@
+// A scene description (io/scene_file.h) built into Embree: each distinct profile once, as a
+// revolve Shape + Geometry (or a tessellated mesh) in a scene of its own, instanced into a flat
+// top-level scene under each object's transform; quads as top-level triangles. Hits come back in
+// world space with their object's index, a smooth shading normal, and what is needed to spawn
+// secondary rays without re-hitting the surface. Shared by the applications that trace scenes.
+//
+// Object ids: the instance of objects[i] is attached under geometry id i, so Embree's instID is the
+// scene's object index; the quads are one triangle geometry under id objects.size().
+#pragma once
+
+#include "common/embree_handles.h"
+#include "io/scene_file.h"
+
+#include <revolve/revolve.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace revolve::scene {
+
+struct BuildSettings {
+  bool mesh = false;            // tessellate every profile instead of tracing it exactly
+  std::uint32_t slices = 64;    // azimuthal steps of the mesh
+  BuildOptions options;         // the exact surfaces' search structure
+  bool countStats = false;      // MIBIT counters (slower); read with EmbreeScene::stats()
+};
+
+struct WorldHit {
+  float t = 0;
+  Vec3 point{};            // world position of the hit
+  Vec3 geometricNormal{};  // world, unit; the surface's own side (not flipped towards the ray)
+  Vec3 shadingNormal{};    // world, unit, on the geometric normal's side
+  std::uint32_t material = 0;
+  std::uint32_t object = 0;  // index into objects, or objects.size() + quad index
+  // For spawning rays (EmbreeScene::spawn): the world ray and, for exact surfaces, the extra
+  // error of the instance transform; for triangles, the point's per-axis error bound.
+  bool exactSurface = false;
+  Ray ray{};
+  float transformError = 0;
+  Vec3 pointError{};
+};
+
+class EmbreeScene {
+ public:
+  EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  // Nearest hit with tnear <= t <= tfar, or nothing. Thread-safe; never allocates, throws or locks.
+  std::optional<WorldHit> intersect(const Ray& ray) const noexcept;
+  // Whether anything lies on the ray within [tnear, tfar].
+  bool occluded(const Ray& ray) const noexcept;
+  // Origin for a ray leaving `hit` in `direction`: revolve::offsetRayOrigin for exact surfaces
+  // (plus the instance transform's error), the same construction from the barycentric point's
+  // error bound for triangles (pbrt-v4), so the new ray neither re-hits the surface it leaves nor
+  // misses a nearby one.
+  Vec3 spawn(const WorldHit& hit, Vec3 direction) const noexcept;
+
+  Stats stats() const noexcept;               // MIBIT counters summed over every prototype
+  std::size_t revolveBytes() const noexcept;  // Shapes and shading normals
+  std::int64_t embreeBytes() const noexcept;  // Embree's own allocations now (its memory monitor)
+  std::int64_t embreePeakBytes() const noexcept;
+  double buildSeconds() const noexcept { return buildSeconds_; }
+  std::size_t prototypeCount() const noexcept { return prototypes_.size(); }
+
+  struct Prototype;
+  struct Instance;
+
+ private:
+  std::optional<WorldHit> instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+  std::optional<WorldHit> quadHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+
+  struct MemoryCounter {
+    std::atomic<std::int64_t> current{0}, peak{0};
+  };
+  std::unique_ptr<MemoryCounter> memory_;  // outlives the device, which reports to it
+  app::Device device_;
+  std::vector<std::unique_ptr<Prototype>> prototypes_;
+  std::vector<Instance> instances_;
+  std::vector<Vec3> quadVertices_;  // 4 per quad, world space
+  std::vector<std::uint32_t> quadMaterials_;
+  app::Scene top_;
+  double buildSeconds_ = 0;
+};
+
+}  // namespace revolve::scene

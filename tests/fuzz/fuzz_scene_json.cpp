@@ -1,0 +1,71 @@
+// Fuzz target: a scene file as revolve-render reads it. Expected: a SceneError with a one-line
+// message, or a description that keeps the reader's promises (every name resolved to a valid index,
+// unit directions, values in their documented ranges). Anything else, or a sanitizer report, is a
+// finding. Profile CSVs resolve against a folder that does not exist, so a "csv" entry must end in
+// a clean SceneError too.
+#include "fuzz_checks.h"
+#include "io/scene_file.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+using namespace revolve;
+
+namespace {
+
+void checkUnit(const io::Vec3d& v) {
+  FUZZ_CHECK(std::abs(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 1) < 1e-9);
+}
+
+void checkRange(const io::Rgb& c, double hi) {
+  for (const double x : c) FUZZ_CHECK(x >= 0 && x <= hi);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  io::SceneDescription scene;
+  try {
+    scene = io::parseScene(text, "fuzz.json", "/nonexistent-fuzz-folder");
+  } catch (const io::SceneError& error) {
+    fuzz::checkOneLineMessage(error.what());
+    return 0;
+  }
+  FUZZ_CHECK(scene.camera.fovDegrees > 0 && scene.camera.fovDegrees < 180);
+  for (const io::SceneProfile& profile : scene.profiles) {
+    FUZZ_CHECK(profile.profile.points().size() >= 2);
+    FUZZ_CHECK(profile.creaseDegrees >= 0 && profile.creaseDegrees <= 180);
+    // The shading normals of every accepted profile are built and unit at each segment's ends.
+    const ShadingNormals normals(profile.profile, profile.creaseDegrees);
+    const std::span<const double> arc = profile.profile.arcLength();
+    for (std::uint32_t s = 0; s < profile.profile.segmentCount() && s < 64; ++s) {
+      for (const double at : {arc[s], arc[s + 1]}) {
+        const Vec3 n = normals.normal(s, 0.3f, float(at / arc.back()));
+        FUZZ_CHECK(std::abs(std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z) - 1) < 1e-5);
+      }
+    }
+  }
+  for (const io::SceneMaterial& material : scene.materials) {
+    checkRange(material.color, 1);
+    checkRange(material.tint, 1);
+    FUZZ_CHECK(material.roughness >= 0 && material.roughness <= 1);
+    FUZZ_CHECK(material.ior >= 1 && material.ior <= 4);
+  }
+  for (const io::SceneObject& object : scene.objects) {
+    FUZZ_CHECK(object.profile < scene.profiles.size());
+    FUZZ_CHECK(object.material < scene.materials.size());
+    checkUnit(object.transform.rotateAxis);
+    for (const double s : object.transform.scale) FUZZ_CHECK(s > 0 && std::isfinite(s));
+  }
+  for (const io::SceneQuad& quad : scene.quads) FUZZ_CHECK(quad.material < scene.materials.size());
+  for (const io::SceneLight& light : scene.lights) {
+    if (light.type == io::LightType::sun) {
+      checkUnit(light.direction);
+      FUZZ_CHECK(light.angleDegrees >= 0 && light.angleDegrees <= 45);
+    }
+  }
+  return 0;
+}
