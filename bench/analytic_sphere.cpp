@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 
 namespace revolve::bench {
@@ -58,13 +57,12 @@ void sphereIntersect(const RTCIntersectFunctionNArguments* args) {
     const double nx = (lane.ox + t * lane.dx - sphere.centre[0]) / sphere.radius;
     const double ny = (lane.oy + t * lane.dy - sphere.centre[1]) / sphere.radius;
     const double nz = (lane.oz + t * lane.dz - sphere.centre[2]) / sphere.radius;
-    const double u = std::atan2(ny, nx) * (0.5 / std::numbers::pi);
     RTCRayN_tfar(rays, args->N, i) = float(t);
     RTCHitN_Ng_x(hits, args->N, i) = float(nx);
     RTCHitN_Ng_y(hits, args->N, i) = float(ny);
     RTCHitN_Ng_z(hits, args->N, i) = float(nz);
-    RTCHitN_u(hits, args->N, i) = float(u < 0.0 ? u + 1.0 : u);
-    RTCHitN_v(hits, args->N, i) = float(0.5 * (nz + 1.0));
+    RTCHitN_u(hits, args->N, i) = 0.0f;  // the floor: no surface parameters computed
+    RTCHitN_v(hits, args->N, i) = 0.0f;
     RTCHitN_primID(hits, args->N, i) = 0;
     RTCHitN_geomID(hits, args->N, i) = args->geomID;
     RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];

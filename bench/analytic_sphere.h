@@ -1,5 +1,5 @@
-// The floor of what any Embree user geometry costs: a sphere, one quadratic a ray, writing the
-// same attributes revolve writes (t, a unit Ng, u from the azimuth, v from the height).
+// The floor of what any Embree user geometry costs: a sphere, one quadratic a ray in double
+// precision, writing t and a unit Ng (u and v left 0: no surface parameters computed).
 #pragma once
 
 #include <embree3/rtcore.h>

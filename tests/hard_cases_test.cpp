@@ -103,6 +103,43 @@ TEST(HardCasesTest, RaysThroughAnApexHitIt) {
   }
 }
 
+TEST(HardCasesTest, RaysAlongAGeneratorOfAConeHitWhereTheyFirstMeetIt) {
+  // A ray along a generator of a cone lies on the surface from where it enters the segment's slab to
+  // where it leaves: g vanishes identically and its computed coefficients are rounding noise. Its
+  // first hit is the entry: the apex, coming from above, or the rim, coming from below. The apex is
+  // at z = 1 and the rim at z = 0; a Pythagorean triple (a, b, c) and k = j / 64 give the generator
+  // direction (a k, b k, -1) of the cone of rim radius c k, every coordinate exact in float.
+  const int triples[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}};
+  for (const Variant& variant : kVariants) {
+    std::size_t fired = 0, wrong = 0;
+    for (const auto& triple : triples) {
+      for (int j = 1; j <= 24; ++j) {
+        const float k = j / 64.0f;
+        const Shape shape(Profile(std::vector<Point2>{{0.0, 1.0}, {triple[2] * k, 0.0}}), variant.options);
+        for (int quadrant = 0; quadrant < 4; ++quadrant) {
+          const float x = (quadrant & 1 ? -1.0f : 1.0f) * triple[0] * k;
+          const float y = (quadrant & 2 ? -1.0f : 1.0f) * triple[1] * k;
+          for (const bool fromAbove : {true, false}) {
+            const Vec3 d = fromAbove ? Vec3{x, y, -1.0f} : Vec3{-x, -y, 1.0f};
+            const Vec3 entry = fromAbove ? Vec3{0.0f, 0.0f, 1.0f} : Vec3{x, y, 0.0f};
+            const Vec3 origin{entry.x - 2 * d.x, entry.y - 2 * d.y, entry.z - 2 * d.z};
+            const std::optional<Hit> hit = intersect(shape, {origin, d});
+            ++fired;
+            if (!hit || hit->t > 2.0f * (1 + 4 * float(kFloatRoundoff))) {
+              if (++wrong <= 3) {
+                ADD_FAILURE() << variant.name << ", rim " << triple[2] * k << ", d=(" << d.x << ", " << d.y << ", "
+                              << d.z << "): " << (hit ? hit->t : -1.0f) << ", expected 2";
+              }
+            }
+          }
+        }
+      }
+    }
+    report("rays along a generator of a cone", variant.name, fired, wrong);
+    EXPECT_EQ(wrong, 0u);
+  }
+}
+
 TEST(HardCasesTest, NearlyHorizontalRaysGrazingAnApexStayOnTheSurface) {
   // A solid cone with its apex at the top (0, 0, 0); rays nearly parallel to the apex plane
   // (|dz| ~ 1e-13..1e-9) passing within ~2e-15 of the apex. A touch must be placed where the ray

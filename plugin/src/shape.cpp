@@ -53,6 +53,16 @@ Shape::Shape(Profile profile, const BuildOptions& options)
   // The farthest surface point from the centre is a vertex (distance is convex along a segment).
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
 
+  const std::span<const double> arc = impl.profile.arcLength();
+  impl.segments.reserve(points.size() - 1);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const double er = points[k + 1].r - points[k].r, ez = points[k + 1].z - points[k].z;
+    const double length2 = er * er + ez * ez;  // magnitudes within 2^+-60: no overflow, no underflow
+    const double length = std::sqrt(length2);
+    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, arc[k] / arc.back(),
+                             (arc[k + 1] - arc[k]) / arc.back()});
+  }
+
   impl.mibit = detail::buildMibitTree(impl.local, options);
   // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
   // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
@@ -90,7 +100,7 @@ std::size_t Shape::treeNodeCount() const noexcept {
 
 std::size_t Shape::memoryBytes() const noexcept {
   const Impl& impl = *impl_;
-  return sizeof(Impl) + impl.local.capacity() * sizeof(Point2) +
+  return sizeof(Impl) + impl.local.capacity() * sizeof(Point2) + impl.segments.capacity() * sizeof(detail::SegmentFrame) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +

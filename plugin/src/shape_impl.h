@@ -11,6 +11,17 @@
 #include <vector>
 
 namespace revolve {
+namespace detail {
+
+// What a hit's attributes need of its segment, computed once: no square root or division is left
+// for the hit itself but the azimuth's.
+struct SegmentFrame {
+  double nr, nz;      // the unit normal in the meridian plane, right of the direction of travel
+  double invLength2;  // 1 / |p1 - p0|^2
+  double v0, dv;      // v at the segment's start, and its growth along the segment
+};
+
+}  // namespace detail
 
 struct Shape::Impl {
   Impl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
@@ -19,6 +30,7 @@ struct Shape::Impl {
   BuildOptions options;
   detail::ShapeFrame frame;
   std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)
+  std::vector<detail::SegmentFrame> segments;  // one per segment
   detail::MibitTree mibit;      // always built: it also serves closest-point queries and in-plane rays
   detail::WideTree wide;        // the SIMD layout, for the default options (BuildOptions::wideNodes)
   detail::StripTree strips;     // built for Method::kajiya only

@@ -84,25 +84,30 @@ struct MeridianRay {
 // the bounding sphere within [tnear, tfar].
 inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRay& out) noexcept {
   const double ox = ray.origin.x, oy = ray.origin.y, oz = double(ray.origin.z) - frame.zCentre;
-  double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-  const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+  const double Dx = ray.direction.x, Dy = ray.direction.y, Dz = ray.direction.z;
+  const double length2 = Dx * Dx + Dy * Dy + Dz * Dz;  // float inputs: finite, no overflow
   // Written so that NaN fails every test.
-  if (!(length > 0.0 && length < HUGE_VAL) || !(std::abs(ox) < HUGE_VAL && std::abs(oy) < HUGE_VAL &&
-                                                std::abs(oz) < HUGE_VAL && std::abs(double(ray.tnear)) < HUGE_VAL)) {
+  if (!(length2 > 0.0 && length2 < HUGE_VAL) || !(std::abs(ox) < HUGE_VAL && std::abs(oy) < HUGE_VAL &&
+                                                  std::abs(oz) < HUGE_VAL && std::abs(double(ray.tnear)) < HUGE_VAL)) {
     return false;
   }
   if (!(ray.tnear <= ray.tfar)) return false;
-  const double invLength = 1.0 / length;
-  dx *= invLength;
-  dy *= invLength;
-  dz *= invLength;
 
-  const double sCentre = -(ox * dx + oy * dy + oz * dz);  // unit-speed parameter of the closest point
-  const double qx = ox + sCentre * dx, qy = oy + sCentre * dy, qz = oz + sCentre * dz;
+  // The closest point to the centre, in the caller's t, from the raw direction: this chain (the
+  // set-up's longest, up to the sphere's half chord) then waits for one division, not for a
+  // square root and a division before the direction is unit. Its t is t0 exactly, so the re-centred
+  // origin and t0 agree to the rounding of q alone.
+  const double tCentre = -(ox * Dx + oy * Dy + oz * Dz) / length2;
+  const double qx = ox + tCentre * Dx, qy = oy + tCentre * Dy, qz = oz + tCentre * Dz;
   const double R = frame.sphereRadius;
   const double halfChord2 = R * R - (qx * qx + qy * qy + qz * qz);
   if (!(halfChord2 >= 0.0)) return false;
   const double w = std::sqrt(halfChord2);
+
+  // Meanwhile the unit direction.
+  const double length = std::sqrt(length2);
+  const double invLength = 1.0 / length;
+  const double dx = Dx * invLength, dy = Dy * invLength, dz = Dz * invLength;
 
   out.ox = qx;
   out.oy = qy;
@@ -111,9 +116,9 @@ inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRa
   out.dy = dy;
   out.dz = dz;
   out.tScale = length;
-  out.t0 = sCentre / length;
-  out.lo = std::max((double(ray.tnear) - out.t0) * length, -w);
-  out.hi = std::min((double(ray.tfar) - out.t0) * length, w);  // tfar = inf gives w
+  out.t0 = tCentre;
+  out.lo = std::max((double(ray.tnear) - tCentre) * length, -w);
+  out.hi = std::min((double(ray.tfar) - tCentre) * length, w);  // tfar = inf gives w
   if (!(out.lo <= out.hi)) return false;
 
   out.a = dx * dx + dy * dy;
@@ -121,14 +126,14 @@ inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRa
   out.invA = out.a > 0.0 ? 1.0 / out.a : 0.0;
   out.beta = out.cross * out.cross * out.invA;
   out.sAxis = -(qx * dx + qy * dy) * out.invA;
-  out.inPlane = dz == 0.0;
-  out.invDz = out.inPlane ? 0.0 : 1.0 / dz;
+  out.inPlane = Dz == 0.0;
+  out.invDz = out.inPlane ? 0.0 : length / Dz;  // 1 / dz
   out.rho2Slack = frame.rho2Slack;
   out.rho2Margin = frame.rho2Margin;
   out.bandMargin = frame.bandMargin;
   out.lineSlack = 2.0 * kUnitRoundoff *
                   (std::abs(ox) + std::abs(oy) + std::abs(double(ray.origin.z)) + std::abs(frame.zCentre) +
-                   std::abs(sCentre));
+                   std::abs(tCentre) * length);
   return true;
 }
 

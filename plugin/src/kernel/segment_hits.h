@@ -68,6 +68,24 @@ inline bool insideConeAt(const MeridianRay& ray, double s, Point2 p0, double er,
   return onCounts ? outward <= 0.0 : outward < 0.0;
 }
 
+// Whether g (expanded about m) vanishes within its rounding: a ray along a generator of the cone
+// (in a meridian plane, through the apex, at the cone's slope), where g is identically zero and the
+// computed coefficients are noise whose signs would place roots anywhere in the bracket. Each
+// coefficient is a difference of products of the terms below, computed with at most 6 roundings
+// from quantities themselves within 3 roundings of their terms (gamma_9 < 10 u of the terms'
+// magnitudes): 32 u bounds it with room. A ray parallel to a generator a few u R away is then taken
+// as running along it too, which moves its hit by no more than that distance.
+inline bool alongSurface(const MeridianRay& ray, const Quadratic& g, double m, Point2 p0, double er, double ez) noexcept {
+  const double ez2 = ez * ez;
+  if (!(std::abs(g.A) <= 32.0 * kUnitRoundoff * (ez2 * ray.a + er * er * ray.dz * ray.dz))) return false;  // the usual case
+  const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
+  const double bTerms = std::abs(px * ray.dx) + std::abs(py * ray.dy);
+  const double lTerms = std::abs(p0.r * ez) + std::abs((ray.zAt(m) - p0.z) * er) + std::abs(ray.zAt(m) * er);
+  const double magnitudeB = ez2 * bTerms + std::abs(er * ray.dz) * lTerms;
+  const double magnitudeC = ez2 * (px * px + py * py) + lTerms * lTerms;
+  return std::abs(g.B) <= 32.0 * kUnitRoundoff * magnitudeB && std::abs(g.C) <= 32.0 * kUnitRoundoff * magnitudeC;
+}
+
 }  // namespace segment_hits_internal
 
 // All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order.
@@ -118,10 +136,17 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
         m = std::clamp(m - g.B / g.A, x0, x1);
         g = expandAbout(m);
       }
+      hits.solved = true;
+      if (alongSurface(ray, g, m, p0, er, ez)) {
+        // Every point of [x0, x1] lies on the surface within rounding: the first is the hit, and
+        // the last too when the end signs agree, so that the parity they dictate holds.
+        hits.s[hits.count++] = x0;
+        if (inside0 == inside1 && x1 > x0) hits.s[hits.count++] = x1;
+        return hits;
+      }
       const Roots roots = bracketedRoots(g, x0 - m, x1 - m, inside0, inside1);
       // Clamped again after adding m back, which rounds: a root must not leave its segment's stretch.
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(m + roots.x[i], x0, x1);
-      hits.solved = true;
     }
   } else {
     // The ray stays in the plane z = oz, where the cone is a circle. A segment owns the heights

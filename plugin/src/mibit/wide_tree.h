@@ -39,7 +39,7 @@ struct WideLeaf {
 
 struct WideTree {
   static constexpr std::uint32_t kLeafBit = 0x80000000u;
-  static constexpr std::uint32_t kLeafSegments = 64;  // a leaf's candidates fit one 64-bit mask
+  static constexpr std::uint32_t kLeafSegments = 32;  // a leaf's candidates fit one 64-bit mask
   static constexpr std::uint32_t kPadding = 8;        // entries past the end, for whole-register loads
   static constexpr int kStackEntries = 128;           // the search's stack: 7 entries a level at most
 
