@@ -9,6 +9,7 @@
 #pragma once
 
 #include "embree/payload.h"
+#include "kernel/meridian_rays.h"
 #include "shape_search.h"
 #include "surface_hit.h"
 #include "util/isa.h"
@@ -20,14 +21,14 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
-Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
+inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
   return {{RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i)},
           {RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i)},
           RTCRayN_tnear(rays, N, i),
           RTCRayN_tfar(rays, N, i)};
 }
 
-RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* context) noexcept {
+inline RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* context) noexcept {
   RTCHit out{};
   out.Ng_x = hit.normal.x;
   out.Ng_y = hit.normal.y;
@@ -131,34 +132,65 @@ struct FilteredAny {
   }
 };
 
+// The nearest hit of lane i, its MeridianRay set up, written into the packet.
+template <bool kCount>
+inline void intersectLane(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
+                          const MeridianRay& meridian, unsigned i, Stats& stats) noexcept {
+  const unsigned N = args->N;
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
+  const Ray ray = laneRay(rays, N, i);
+  double hi = meridian.hi;
+  if (filtered) {
+    FilteredNearest<kCount> visitor{args, shape, meridian, ray, i, hi, stats};
+    searchShape<kCount>(shape, meridian, hi, visitor, stats);
+    return;
+  }
+  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  searchShape<kCount>(shape, meridian, hi, nearest, stats);
+  if (!nearest.found()) return;
+  const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+  const RTCHit out = embreeHit(hit, args->geomID, args->context);
+  RTCRayN_tfar(rays, N, i) = hit.t;
+  rtcCopyHitToHitN(RTCRayHitN_HitN(args->rayhit, N), &out, N, i);
+}
+
+// The packet's lanes as setUpMeridianRays reads them, from lane `first` on.
+inline RayLanes rayLanes(RTCRayN* rays, unsigned N, unsigned first) noexcept {
+  return {&RTCRayN_org_x(rays, N, first), &RTCRayN_org_y(rays, N, first), &RTCRayN_org_z(rays, N, first),
+          &RTCRayN_dir_x(rays, N, first), &RTCRayN_dir_y(rays, N, first), &RTCRayN_dir_z(rays, N, first),
+          &RTCRayN_tnear(rays, N, first), &RTCRayN_tfar(rays, N, first)};
+}
+
 template <bool kCount>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
   const Shape::Impl& shape = *payload.shape;
   const unsigned N = args->N;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
-  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
   const bool filtered = payload.intersectFilter || args->context->filter != nullptr;
   Stats stats;
-  for (unsigned i = 0; i < N; ++i) {
-    if (args->valid[i] != -1) continue;
-    if constexpr (kCount) ++stats.rays;
-    const Ray ray = laneRay(rays, N, i);
-    MeridianRay meridian;
-    if (!setUpMeridianRay(shape.frame, ray, meridian)) continue;
-    double hi = meridian.hi;
-    if (filtered) {
-      FilteredNearest<kCount> visitor{args, shape, meridian, ray, i, hi, stats};
-      searchShape<kCount>(shape, meridian, hi, visitor, stats);
-      continue;
+  if (N == 1) {
+    if (args->valid[0] == -1) {
+      if constexpr (kCount) ++stats.rays;
+      MeridianRay meridian;
+      if (setUpMeridianRay(shape.frame, laneRay(rays, 1, 0), meridian)) {
+        intersectLane<kCount>(args, shape, filtered, meridian, 0, stats);
+      }
     }
-    NearestHit<kCount> nearest{shape, meridian, hi, stats};
-    searchShape<kCount>(shape, meridian, hi, nearest, stats);
-    if (!nearest.found()) continue;
-    const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
-    const RTCHit out = embreeHit(hit, args->geomID, args->context);
-    RTCRayN_tfar(rays, N, i) = hit.t;
-    rtcCopyHitToHitN(hits, &out, N, i);
+  } else {
+    // Packets (N = 4, 8, 16, a multiple of kLanes): the lanes are set up kLanes at a time.
+    for (unsigned first = 0; first < N; first += kLanes) {
+      unsigned active = 0;
+      for (int lane = 0; lane < kLanes; ++lane) active |= unsigned(args->valid[first + lane] == -1) << lane;
+      if (active == 0) continue;
+      if constexpr (kCount) stats.rays += unsigned(__builtin_popcount(active));
+      MeridianRay meridians[kLanes];
+      active &= setUpMeridianRays(shape.frame, rayLanes(rays, N, first), meridians);
+      for (; active != 0; active &= active - 1) {
+        const int lane = __builtin_ctz(active);
+        intersectLane<kCount>(args, shape, filtered, meridians[lane], first + unsigned(lane), stats);
+      }
+    }
   }
   if constexpr (kCount) payload.add(stats);
 }

@@ -29,11 +29,22 @@ struct LaneMask {
 };
 
 [[gnu::always_inline]] inline Lanes load(const double* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
+#if defined(__AVX2__)
+[[gnu::always_inline]] inline Lanes loadFloats(const float* p) noexcept { return {_mm256_cvtps_pd(_mm_loadu_ps(p))}; }
+#else
+[[gnu::always_inline]] inline Lanes loadFloats(const float* p) noexcept {
+  return {_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p))))};
+}
+#endif
 [[gnu::always_inline]] inline void store(double* p, Lanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
 [[gnu::always_inline]] inline Lanes splat(double x) noexcept { return {REVOLVE_SIMD(set1)(x)}; }
 [[gnu::always_inline]] inline Lanes operator+(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(add)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes operator-(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(sub)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes operator*(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(mul)(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes operator/(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(div)(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes operator-(Lanes a) noexcept { return {REVOLVE_SIMD(xor)(a.v, REVOLVE_SIMD(set1)(-0.0))}; }
+[[gnu::always_inline]] inline Lanes sqrt(Lanes a) noexcept { return {REVOLVE_SIMD(sqrt)(a.v)}; }
+[[gnu::always_inline]] inline Lanes abs(Lanes a) noexcept { return {REVOLVE_SIMD(andnot)(REVOLVE_SIMD(set1)(-0.0), a.v)}; }
 // min and max as minsd / maxsd compute them; no operand here is ever NaN.
 [[gnu::always_inline]] inline Lanes min(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes max(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
@@ -43,10 +54,23 @@ struct LaneMask {
 #if defined(__AVX2__)
 [[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
 [[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
+[[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
+// Lane by lane, `ifSet` where the mask holds, `otherwise` elsewhere.
+[[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes ifSet, Lanes otherwise) noexcept {
+  return {_mm256_blendv_pd(otherwise.v, ifSet.v, m.v)};
+}
 #else
 [[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept { return {_mm_cmplt_pd(a.v, b.v)}; }
 [[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept { return {_mm_cmple_pd(a.v, b.v)}; }
+[[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept { return {_mm_cmpeq_pd(a.v, b.v)}; }
+[[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes ifSet, Lanes otherwise) noexcept {
+  return {_mm_or_pd(_mm_and_pd(m.v, ifSet.v), _mm_andnot_pd(m.v, otherwise.v))};
+}
 #endif
+// std::max and std::min lane by lane, with their exact semantics (the first argument when neither
+// is less, which decides the sign of a zero result): the vector instructions return the second.
+[[gnu::always_inline]] inline Lanes maxOf(Lanes a, Lanes b) noexcept { return select(a < b, b, a); }
+[[gnu::always_inline]] inline Lanes minOf(Lanes a, Lanes b) noexcept { return select(b < a, b, a); }
 // Bit i set when lane i holds.
 [[gnu::always_inline]] inline unsigned bits(LaneMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
 
