@@ -66,9 +66,11 @@ Shape::Shape(Profile profile, const BuildOptions& options)
   impl.mibit = detail::buildMibitTree(impl.local, options);
   // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
   // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
+  // Its float filter needs R^2 well inside float's range (mibit/wide_search.h).
+  const double R = impl.frame.sphereRadius;
   if (options.method == Method::mibit && options.wideNodes && options.shell == ShellKind::cylinder &&
-      options.monotoneSplit && options.rangeSearch && options.subdivisions == 0) {
-    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame.rho2Margin);
+      options.monotoneSplit && options.rangeSearch && options.subdivisions == 0 && R >= 0x1p-50 && R <= 0x1p50) {
+    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
   }
   if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
   impl.bounds = paddedBounds(rMax, zMin, zMax);

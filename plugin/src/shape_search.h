@@ -24,8 +24,8 @@ inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double
                         Stats& stats) noexcept {
   switch (shape.options.method) {
     case Method::mibit:
-      if (!shape.wide.empty() && !ray.inPlane) {
-        searchWide<kCount>(shape.wide, ray, hi, visit, stats);
+      if (!shape.wide.empty() && !ray.inPlane && wideSearchServes(ray)) {
+        searchWide<kCount>(shape.wide, ray, shape.frame.sphereRadius, hi, visit, stats);
       } else {
         searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
       }

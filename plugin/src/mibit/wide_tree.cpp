@@ -1,5 +1,7 @@
 #include "mibit/wide_tree.h"
 
+#include "util/rounding.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,13 +10,23 @@
 namespace revolve::detail {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-// A subtree as its parent sees it: where it is and what bounds it.
+// A subtree as its parent sees it: where it is and what bounds it (exact, before rounding).
 struct Child {
   std::uint32_t ref;
   double zLow, zHigh, rMin, rMax;
 };
+
+// A shell in single precision, rounded outwards: the slab widened to the floats around it, the
+// squared radii widened by `margin` and rounded away from the shell.
+struct FloatShell {
+  float zLow, zHigh, low2, high2;
+};
+
+FloatShell floatShell(const Child& c, double margin) {
+  return {floatBelow(c.zLow), floatAbove(c.zHigh), floatBelow(c.rMin * c.rMin - margin), floatAbove(c.rMax * c.rMax + margin)};
+}
 
 class Builder {
  public:
@@ -34,12 +46,12 @@ class Builder {
     }
   }
 
-  // MG and the MR levels above the leaves: neighbours along the profile grouped eight at a time,
-  // level by level, up to one root.
+  // MG and the MR levels above the leaves: neighbours along the profile grouped up to kMaxChildren
+  // at a time, level by level, up to one root.
   void group() {
     while (level_.size() > 1) {
       std::vector<Child> next;
-      const std::size_t groups = (level_.size() + WideNode::kWidth - 1) / WideNode::kWidth;
+      const std::size_t groups = (level_.size() + WideNode::kMaxChildren - 1) / WideNode::kMaxChildren;
       for (std::size_t g = 0; g < groups; ++g) {
         const std::size_t begin = g * level_.size() / groups, end = (g + 1) * level_.size() / groups;
         next.push_back(node(std::span<const Child>(level_).subspan(begin, end - begin)));
@@ -52,29 +64,20 @@ class Builder {
 
  private:
   Child node(std::span<const Child> children) {
-    WideNode node{};
-    node.childCount = std::uint32_t(children.size());
-    Child bounds{std::uint32_t(tree_.nodes.size()), kInfinity, -kInfinity, kInfinity, -kInfinity};
-    for (int j = 0; j < WideNode::kWidth; ++j) {
-      if (std::size_t(j) < children.size()) {
-        const Child& c = children[j];
-        node.zLow[j] = c.zLow;
-        node.zHigh[j] = c.zHigh;
-        node.low2[j] = c.rMin * c.rMin - margin_;
-        node.high2[j] = c.rMax * c.rMax + margin_;
-        node.child[j] = c.ref;
-        bounds.zLow = std::min(bounds.zLow, c.zLow);
-        bounds.zHigh = std::max(bounds.zHigh, c.zHigh);
-        bounds.rMin = std::min(bounds.rMin, c.rMin);
-        bounds.rMax = std::max(bounds.rMax, c.rMax);
-      } else {
-        node.zLow[j] = node.zHigh[j] = 0.0;
-        node.low2[j] = kInfinity;
-        node.high2[j] = -kInfinity;
-        node.child[j] = 0;
-      }
+    tree_.nodes.push_back({std::uint32_t(tree_.childRef.size()), std::uint32_t(children.size())});
+    Child bounds{std::uint32_t(tree_.nodes.size() - 1), INFINITY, -INFINITY, INFINITY, -INFINITY};
+    for (const Child& c : children) {
+      const FloatShell shell = floatShell(c, margin_);
+      tree_.childZLow.push_back(shell.zLow);
+      tree_.childZHigh.push_back(shell.zHigh);
+      tree_.childLow2.push_back(shell.low2);
+      tree_.childHigh2.push_back(shell.high2);
+      tree_.childRef.push_back(c.ref);
+      bounds.zLow = std::min(bounds.zLow, c.zLow);
+      bounds.zHigh = std::max(bounds.zHigh, c.zHigh);
+      bounds.rMin = std::min(bounds.rMin, c.rMin);
+      bounds.rMax = std::max(bounds.rMax, c.rMax);
     }
-    tree_.nodes.push_back(node);
     return bounds;
   }
 
@@ -88,30 +91,44 @@ class Builder {
 
 std::size_t WideTree::memoryBytes() const noexcept {
   return nodes.capacity() * sizeof(WideNode) + leaves.capacity() * sizeof(WideLeaf) +
-         (vertexZ.capacity() + segmentLow2.capacity() + segmentHigh2.capacity()) * sizeof(double);
+         (segmentZLow.capacity() + segmentZHigh.capacity() + segmentLow2.capacity() + segmentHigh2.capacity() +
+          childZLow.capacity() + childZHigh.capacity() + childLow2.capacity() + childHigh2.capacity()) *
+             sizeof(float) +
+         childRef.capacity() * sizeof(std::uint32_t);
 }
 
-WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, double rho2Margin) {
+WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, const ShapeFrame& frame) {
   WideTree tree;
+  // The leaves' double-precision margin plus the float filter's own error (wide_search.h).
+  const double margin = frame.rho2Margin + WideTree::kFloatSlack * frame.sphereRadius * frame.sphereRadius;
   const std::size_t segments = points.size() - 1;
-  tree.vertexZ.reserve(points.size() + WideTree::kPadding);
-  for (const Point2& p : points) tree.vertexZ.push_back(p.z);
-  tree.vertexZ.insert(tree.vertexZ.end(), WideTree::kPadding, points.back().z);
-  tree.segmentLow2.reserve(segments + WideTree::kPadding);
-  tree.segmentHigh2.reserve(segments + WideTree::kPadding);
-  for (std::size_t k = 0; k < segments; ++k) {
-    const double rMin = std::min(points[k].r, points[k + 1].r), rMax = std::max(points[k].r, points[k + 1].r);
-    tree.segmentLow2.push_back(rMin * rMin - rho2Margin);
-    tree.segmentHigh2.push_back(rMax * rMax + rho2Margin);
+  for (auto* v : {&tree.segmentZLow, &tree.segmentZHigh, &tree.segmentLow2, &tree.segmentHigh2}) {
+    v->reserve(segments + WideTree::kPadding);
   }
+  for (std::size_t k = 0; k < segments; ++k) {
+    const Point2 a = points[k], b = points[k + 1];
+    const FloatShell shell = floatShell({0, std::min(a.z, b.z), std::max(a.z, b.z), std::min(a.r, b.r), std::max(a.r, b.r)}, margin);
+    tree.segmentZLow.push_back(shell.zLow);
+    tree.segmentZHigh.push_back(shell.zHigh);
+    tree.segmentLow2.push_back(shell.low2);
+    tree.segmentHigh2.push_back(shell.high2);
+  }
+  tree.segmentZLow.insert(tree.segmentZLow.end(), WideTree::kPadding, 0.0f);
+  tree.segmentZHigh.insert(tree.segmentZHigh.end(), WideTree::kPadding, 0.0f);
   tree.segmentLow2.insert(tree.segmentLow2.end(), WideTree::kPadding, kInfinity);
   tree.segmentHigh2.insert(tree.segmentHigh2.end(), WideTree::kPadding, -kInfinity);
 
-  Builder builder(points, rho2Margin, tree);
+  if (segments <= WideTree::kFlatSegments) tree.flatSegments = std::uint32_t(segments);
+  Builder builder(points, margin, tree);
   for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
   builder.group();
-  // Each level pushes at most 7 entries; within Profile::kMaxPoints the depth stays below 12.
-  if (7 * int(tree.depth) + 1 > WideTree::kStackEntries) throw std::logic_error("wide MIBIT deeper than its search stack");
+  tree.childZLow.insert(tree.childZLow.end(), WideTree::kPadding, 0.0f);
+  tree.childZHigh.insert(tree.childZHigh.end(), WideTree::kPadding, 0.0f);
+  tree.childLow2.insert(tree.childLow2.end(), WideTree::kPadding, kInfinity);
+  tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
+  tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
+  // Each level pushes at most 63 entries; within Profile::kMaxPoints the depth stays below 4.
+  if (63 * int(tree.depth) + 1 > WideTree::kStackEntries) throw std::logic_error("wide MIBIT deeper than its search stack");
   return tree;
 }
 

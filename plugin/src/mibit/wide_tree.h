@@ -2,19 +2,21 @@
 //
 // The tree is the paper's: monotone intervals, refined uniformly (MR), grouped (MG). What changes is
 // its shape in memory. A leaf is a run of up to kLeafSegments segments of one monotone interval,
-// and its segments' own cylinder shells are tested kLanes at a time before any Wang quadratic is
-// set up; since z is monotone along the run, the segments that pass are met by the ray in index
+// and its segments' own cylinder shells are tested eight at a time (AVX2) before any Wang quadratic
+// is set up; since z is monotone along the run, the segments that pass are met by the ray in index
 // order, and the run is visited in that order with no sorting. Above the leaves, nodes of eight
 // children test all their children's shells at once. A profile of up to 64 segments a monotone
 // interval thus costs one node test and a scan; 16,384 points cost four levels instead of the
 // binary tree's fourteen, each a handful of SIMD operations rather than a chain of branches.
 //
-// Shell bounds are the exact vertex heights and radii (doubles); the squared radii carry the shell
-// margin (MeridianRay::rho2Margin), so a shell never prunes a segment the ray hits.
+// The shells are a filter in single precision, made conservative: bounds rounded outwards, squared
+// radii widened by the shell margin plus the float evaluation's error bound (wide_search.h), so a
+// shell never prunes a segment whose double-precision leaf computation reports a hit.
 #pragma once
 
 #include <revolve/revolve.h>
 
+#include "kernel/meridian_ray.h"
 #include "mibit/mibit_tree.h"
 
 #include <cstdint>
@@ -23,13 +25,11 @@
 
 namespace revolve::detail {
 
+// A node: a range of child records (WideTree::child*), up to kMaxChildren, tested kFloatLanes at a
+// time. Wide nodes keep the tree shallow: up to 2,048 segments need one node above the leaves.
 struct WideNode {
-  static constexpr int kWidth = 8;
-  // Per child: the slab zLow <= z <= zHigh and the cylinder shell low2 <= rho^2 <= high2 (squared
-  // radii minus / plus the margin). An empty slot has low2 = +inf: no ray passes it.
-  double zLow[kWidth], zHigh[kWidth], low2[kWidth], high2[kWidth];
-  std::uint32_t child[kWidth];  // a node index, or kLeafBit | a leaf index
-  std::uint32_t childCount;     // slots in use, from the first
+  static constexpr std::uint32_t kMaxChildren = 64;  // a node's candidates fit one 64-bit mask
+  std::uint32_t firstChild, childCount;
 };
 
 struct WideLeaf {
@@ -41,21 +41,31 @@ struct WideTree {
   static constexpr std::uint32_t kLeafBit = 0x80000000u;
   static constexpr std::uint32_t kLeafSegments = 32;  // a leaf's candidates fit one 64-bit mask
   static constexpr std::uint32_t kPadding = 8;        // entries past the end, for whole-register loads
-  static constexpr int kStackEntries = 128;           // the search's stack: 7 entries a level at most
+  static constexpr int kStackEntries = 256;           // the search's stack: 63 entries a level at most
+  // The float evaluation's error bound in rho^2, in units of R^2 (see wide_search.h), with room.
+  static constexpr double kFloatSlack = 64.0 * 0x1p-24;
 
   std::vector<WideNode> nodes;
   std::vector<WideLeaf> leaves;
-  std::vector<double> vertexZ;             // z of every vertex, then kPadding copies of the last
-  std::vector<double> segmentLow2, segmentHigh2;  // each segment's own shell, then kPadding empty ones
+  // Children of all nodes, node by node: the slab zLow <= z <= zHigh and the cylinder shell
+  // low2 <= rho^2 <= high2 of each (squared radii with the margin), then kPadding empty records
+  // (low2 = +inf: no ray passes them), and what each child is (a node index, or kLeafBit | a leaf).
+  std::vector<float> childZLow, childZHigh, childLow2, childHigh2;
+  std::vector<std::uint32_t> childRef;
+  // Each segment's own shell, then kPadding empty ones.
+  std::vector<float> segmentZLow, segmentZHigh, segmentLow2, segmentHigh2;
   std::uint32_t root = 0;   // a node index or kLeafBit | leaf index; meaningless when empty()
   std::uint32_t depth = 0;  // node levels above the leaves
+  // Profiles of at most kFlatSegments segments are scanned whole, without the tree: their count.
+  static constexpr std::uint32_t kFlatSegments = 64;
+  std::uint32_t flatSegments = 0;
 
   bool empty() const noexcept { return leaves.empty(); }
   std::size_t memoryBytes() const noexcept;
 };
 
-// `points` in the shape's local frame; `intervals` its monotone intervals; `rho2Margin` the shape's
-// shell margin (ShapeFrame::rho2Margin).
-WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, double rho2Margin);
+// `points` in the shape's local frame; `intervals` its monotone intervals; `frame` its bounding
+// sphere and shell margin.
+WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, const ShapeFrame& frame);
 
 }  // namespace revolve::detail

@@ -76,5 +76,43 @@ struct LaneMask {
 
 #undef REVOLVE_SIMD
 
+// Single precision, twice the lanes: the wide MIBIT search's conservative shell filter.
+#if defined(__AVX2__)
+inline constexpr int kFloatLanes = 8;
+using NativeFloat = __m256;
+#define REVOLVE_SIMD(op) _mm256_##op##_ps
+#else
+inline constexpr int kFloatLanes = 4;
+using NativeFloat = __m128;
+#define REVOLVE_SIMD(op) _mm_##op##_ps
+#endif
+
+struct FloatLanes {
+  NativeFloat v;
+};
+struct FloatMask {
+  NativeFloat v;
+};
+
+[[gnu::always_inline]] inline FloatLanes load(const float* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
+[[gnu::always_inline]] inline void store(float* p, FloatLanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
+[[gnu::always_inline]] inline FloatLanes splatFloat(float x) noexcept { return {REVOLVE_SIMD(set1)(x)}; }
+[[gnu::always_inline]] inline FloatLanes operator+(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(add)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatLanes operator-(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(sub)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatLanes operator*(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(mul)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatLanes min(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatLanes max(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatMask operator&(FloatMask a, FloatMask b) noexcept { return {REVOLVE_SIMD(and)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatMask operator|(FloatMask a, FloatMask b) noexcept { return {REVOLVE_SIMD(or)(a.v, b.v)}; }
+#if defined(__AVX2__)
+[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
+[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept { return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)}; }
+#else
+[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept { return {_mm_cmplt_ps(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept { return {_mm_cmple_ps(a.v, b.v)}; }
+#endif
+[[gnu::always_inline]] inline unsigned bits(FloatMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
+#undef REVOLVE_SIMD
+
 }  // namespace REVOLVE_ISA
 }  // namespace revolve::detail
