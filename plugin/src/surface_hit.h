@@ -6,9 +6,12 @@
 #include "kernel/meridian_ray.h"
 #include "shape_impl.h"
 #include "util/azimuth.h"
+#include "util/simd.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
@@ -37,6 +40,55 @@ inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ra
   hit.v = float(frame.v0 + std::clamp(along, 0.0, 1.0) * frame.dv);
   hit.segment = k;
   return hit;
+}
+
+// kLanes hits at once, for packets: hit j is ray[j] at s[j] on segment[j], for a caller with
+// [tnear[j], tfar[j]]. The same operations as surfaceHit lane by lane, so the results equal its bit
+// for bit, except where a hit point's x^2 + y^2 is subnormal (within 1e-154 of the axis), where
+// surfaceHit scales: surfaceHitLanes reports those lanes in its result, and the caller takes them
+// through surfaceHit. Unused lanes repeat a used one.
+struct HitLanes {
+  const MeridianRay* ray[kLanes];
+  double s[kLanes];
+  std::uint32_t segment[kLanes];
+  float tnear[kLanes], tfar[kLanes];
+};
+struct HitAttributes {
+  float t[kLanes], nx[kLanes], ny[kLanes], nz[kLanes], u[kLanes], v[kLanes];
+};
+
+inline unsigned surfaceHitLanes(const Shape::Impl& shape, const HitLanes& in, HitAttributes& out) noexcept {
+  alignas(32) double f[17][kLanes];  // gathered: ray, segment and caller, lane by lane
+  for (int lane = 0; lane < kLanes; ++lane) {
+    const MeridianRay& ray = *in.ray[lane];
+    const std::uint32_t k = in.segment[lane];
+    const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
+    const SegmentFrame& frame = shape.segments[k];
+    const double values[17] = {ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.t0, ray.tScale, in.s[lane],
+                               p0.r, p0.z, p1.r, p1.z, frame.nr, frame.nz, frame.invLength2, frame.v0};
+    for (int i = 0; i < 17; ++i) f[i][lane] = values[i];
+  }
+  alignas(32) double dv[kLanes];
+  for (int lane = 0; lane < kLanes; ++lane) dv[lane] = shape.segments[in.segment[lane]].dv;
+  const Lanes s = load(f[8]);
+  const Lanes px = load(f[0]) + s * load(f[3]), py = load(f[1]) + s * load(f[4]), pz = load(f[2]) + s * load(f[5]);
+  const Lanes rho2 = px * px + py * py;
+  const unsigned scaled = bits(rho2 < splat(std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon()));
+  const Lanes rho = sqrt(rho2);
+  const Lanes cosPhi = px / rho, sinPhi = py / rho;
+
+  storeFloats(out.t, load(f[6]) + s / load(f[7]));
+  for (int lane = 0; lane < kLanes; ++lane) out.t[lane] = std::clamp(out.t[lane], in.tnear[lane], in.tfar[lane]);
+  const Lanes nr = load(f[13]);
+  storeFloats(out.nx, nr * cosPhi);
+  storeFloats(out.ny, nr * sinPhi);
+  storeFloats(out.nz, load(f[14]));
+  for (int lane = 0; lane < kLanes; ++lane) out.nx[lane] += 0.0f, out.ny[lane] += 0.0f, out.nz[lane] += 0.0f;
+  azimuthFractions(px, py, out.u);
+  const Lanes r0 = load(f[9]), z0 = load(f[10]);
+  const Lanes along = ((rho - r0) * (load(f[11]) - r0) + (pz - z0) * (load(f[12]) - z0)) * load(f[15]);
+  storeFloats(out.v, load(f[16]) + minOf(maxOf(along, splat(0.0)), splat(1.0)) * load(dv));
+  return scaled;
 }
 
 }  // namespace REVOLVE_ISA

@@ -161,36 +161,97 @@ inline RayLanes rayLanes(RTCRayN* rays, unsigned N, unsigned first) noexcept {
           &RTCRayN_tnear(rays, N, first), &RTCRayN_tfar(rays, N, first)};
 }
 
+// Writes a hit into lane i of the packet.
+inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, float t, float nx, float ny, float nz, float u,
+                     float v, std::uint32_t segment) noexcept {
+  const unsigned N = args->N;
+  RTCRayN_tfar(RTCRayHitN_RayN(args->rayhit, N), N, i) = t;
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
+  RTCHitN_Ng_x(hits, N, i) = nx;
+  RTCHitN_Ng_y(hits, N, i) = ny;
+  RTCHitN_Ng_z(hits, N, i) = nz;
+  RTCHitN_u(hits, N, i) = u;
+  RTCHitN_v(hits, N, i) = v;
+  RTCHitN_primID(hits, N, i) = segment;  // the profile segment, as documented in revolve.h
+  RTCHitN_geomID(hits, N, i) = args->geomID;
+  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) {
+    RTCHitN_instID(hits, N, i, level) = args->context->instID[level];
+  }
+}
+
+// A packet: the lanes set up kLanes at a time, searched one by one, and their hits' attributes
+// computed kLanes at a time (surfaceHitLanes, equal to surfaceHit bit for bit).
+template <bool kCount>
+inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
+                            Stats& stats) noexcept {
+  const unsigned N = args->N;  // 4, 8 or 16: a multiple of kLanes
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
+  MeridianRay meridians[16];
+  struct Found {
+    unsigned lane;
+    double s;
+    std::uint32_t segment;
+  };
+  Found found[16];
+  int foundCount = 0;
+  for (unsigned first = 0; first < N; first += kLanes) {
+    unsigned active = 0;
+    for (int lane = 0; lane < kLanes; ++lane) active |= unsigned(args->valid[first + lane] == -1) << lane;
+    if (active == 0) continue;
+    if constexpr (kCount) stats.rays += unsigned(__builtin_popcount(active));
+    active &= setUpMeridianRays(shape.frame, rayLanes(rays, N, first), &meridians[first]);
+    for (; active != 0; active &= active - 1) {
+      const unsigned i = first + unsigned(__builtin_ctz(active));
+      if (filtered) {
+        intersectLane<kCount>(args, shape, true, meridians[i], i, stats);
+        continue;
+      }
+      double hi = meridians[i].hi;
+      NearestHit<kCount> nearest{shape, meridians[i], hi, stats};
+      searchShape<kCount>(shape, meridians[i], hi, nearest, stats);
+      if (nearest.found()) found[foundCount++] = {i, nearest.s, nearest.segment};
+    }
+  }
+  for (int first = 0; first < foundCount; first += kLanes) {
+    HitLanes in;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const Found& f = found[std::min(first + lane, foundCount - 1)];
+      in.ray[lane] = &meridians[f.lane];
+      in.s[lane] = f.s;
+      in.segment[lane] = f.segment;
+      in.tnear[lane] = RTCRayN_tnear(rays, N, f.lane);
+      in.tfar[lane] = RTCRayN_tfar(rays, N, f.lane);
+    }
+    HitAttributes out{};
+    const unsigned scaled = surfaceHitLanes(shape, in, out);
+    for (int lane = 0; lane < kLanes && first + lane < foundCount; ++lane) {
+      const Found& f = found[first + lane];
+      if ((scaled >> lane) & 1) {  // within 1e-154 of the axis: the scalar path's scaling
+        const Hit hit = surfaceHit(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment);
+        writeHit(args, f.lane, hit.t, hit.normal.x, hit.normal.y, hit.normal.z, hit.u, hit.v, hit.segment);
+      } else {
+        writeHit(args, f.lane, out.t[lane], out.nx[lane], out.ny[lane], out.nz[lane], out.u[lane], out.v[lane], f.segment);
+      }
+    }
+  }
+}
+
 template <bool kCount>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
   const Shape::Impl& shape = *payload.shape;
-  const unsigned N = args->N;
-  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
   const bool filtered = payload.intersectFilter || args->context->filter != nullptr;
   Stats stats;
-  if (N == 1) {
+  if (args->N == 1) {
     if (args->valid[0] == -1) {
       if constexpr (kCount) ++stats.rays;
       MeridianRay meridian;
-      if (setUpMeridianRay(shape.frame, laneRay(rays, 1, 0), meridian)) {
+      if (setUpMeridianRay(shape.frame, laneRay(RTCRayHitN_RayN(args->rayhit, 1), 1, 0), meridian)) {
         intersectLane<kCount>(args, shape, filtered, meridian, 0, stats);
       }
     }
   } else {
-    // Packets (N = 4, 8, 16, a multiple of kLanes): the lanes are set up kLanes at a time.
-    for (unsigned first = 0; first < N; first += kLanes) {
-      unsigned active = 0;
-      for (int lane = 0; lane < kLanes; ++lane) active |= unsigned(args->valid[first + lane] == -1) << lane;
-      if (active == 0) continue;
-      if constexpr (kCount) stats.rays += unsigned(__builtin_popcount(active));
-      MeridianRay meridians[kLanes];
-      active &= setUpMeridianRays(shape.frame, rayLanes(rays, N, first), meridians);
-      for (; active != 0; active &= active - 1) {
-        const int lane = __builtin_ctz(active);
-        intersectLane<kCount>(args, shape, filtered, meridians[lane], first + unsigned(lane), stats);
-      }
-    }
+    intersectPacket<kCount>(args, shape, filtered, stats);
   }
   if constexpr (kCount) payload.add(stats);
 }

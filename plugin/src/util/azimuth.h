@@ -2,6 +2,7 @@
 #pragma once
 
 #include "util/isa.h"
+#include "util/simd.h"
 
 #include <emmintrin.h>
 
@@ -44,11 +45,15 @@ inline Azimuth azimuthOf(double x, double y) noexcept {
 // 2^-31 relative (or 6e-11 absolute) of the exact value, far inside half a float ulp: the float u
 // is the correctly rounded one except when the exact value lies that close to a rounding boundary,
 // and then one ulp off. On the axis (x = y = 0) u = 0.
+namespace azimuth_internal {
+inline constexpr double c0 = 0.999999999628638, c1 = -0.3333332393819627, c2 = 0.1999960469924586,
+                        c3 = -0.1427916025220038, c4 = 0.11054504604737364, c5 = -0.08798783337292032,
+                        c6 = 0.06716131221745177, c7 = -0.04435780917567998, c8 = 0.022274608772727314,
+                        c9 = -0.00719949830984707, c10 = 0.0010911327931163242;
+}  // namespace azimuth_internal
+
 inline float azimuthFraction(double x, double y) noexcept {
-  constexpr double c0 = 0.999999999628638, c1 = -0.3333332393819627, c2 = 0.1999960469924586,
-                   c3 = -0.1427916025220038, c4 = 0.11054504604737364, c5 = -0.08798783337292032,
-                   c6 = 0.06716131221745177, c7 = -0.04435780917567998, c8 = 0.022274608772727314,
-                   c9 = -0.00719949830984707, c10 = 0.0010911327931163242;
+  using namespace azimuth_internal;
   const __m128d zero = _mm_setzero_pd();
   const __m128d vx = _mm_set_sd(x), vy = _mm_set_sd(y);
   const __m128d signBit = _mm_set_sd(-0.0);
@@ -71,6 +76,27 @@ inline float azimuthFraction(double x, double y) noexcept {
   const double wrapped = _mm_cvtsd_f64(_mm_add_sd(u, _mm_and_pd(_mm_cmplt_sd(u, zero), _mm_set_sd(1.0))));
   const auto f = static_cast<float>(wrapped);
   return f < 1.0f ? f : 0.0f;  // phi just below 2 pi rounds to 1: the same azimuth as 0
+}
+
+// azimuthFraction of kLanes points at once, the same operations lane by lane: bit for bit equal.
+inline void azimuthFractions(Lanes x, Lanes y, float* u) noexcept {
+  using namespace azimuth_internal;
+  const Lanes zero = splat(0.0);
+  const Lanes ax = abs(x), ay = abs(y);
+  const LaneMask steep = ax < ay;
+  const Lanes big = max(ax, ay), small = min(ax, ay);  // maxsd / minsd, as the scalar version
+  const Lanes a = select(zero < big, small / big, zero);
+  const Lanes s = a * a, s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+  const Lanes p = (splat(c0) + splat(c1) * s) + s2 * (splat(c2) + splat(c3) * s) +
+                  s4 * ((splat(c4) + splat(c5) * s) + s2 * (splat(c6) + splat(c7) * s)) +
+                  s8 * ((splat(c8) + splat(c9) * s) + s2 * splat(c10));
+  Lanes phi = a * p;
+  phi = select(steep, splat(1.5707963267948966) - phi, phi);
+  phi = select(x < zero, splat(3.141592653589793) - phi, phi);
+  phi = select(y < zero, -phi, phi);
+  const Lanes fraction = phi * splat(0.5 / 3.141592653589793);
+  storeFloats(u, fraction + onlyWhere(fraction < zero, splat(1.0)));
+  for (int lane = 0; lane < kLanes; ++lane) u[lane] = u[lane] < 1.0f ? u[lane] : 0.0f;
 }
 
 }  // namespace REVOLVE_ISA

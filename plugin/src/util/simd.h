@@ -32,8 +32,9 @@ struct LaneMask {
 #if defined(__AVX2__)
 [[gnu::always_inline]] inline Lanes loadFloats(const float* p) noexcept { return {_mm256_cvtps_pd(_mm_loadu_ps(p))}; }
 #else
+// Two floats through __m64, which may alias them (a double pointer would break strict aliasing).
 [[gnu::always_inline]] inline Lanes loadFloats(const float* p) noexcept {
-  return {_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p))))};
+  return {_mm_cvtps_pd(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(p)))};
 }
 #endif
 [[gnu::always_inline]] inline void store(double* p, Lanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
@@ -65,6 +66,16 @@ struct LaneMask {
 [[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept { return {_mm_cmpeq_pd(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes ifSet, Lanes otherwise) noexcept {
   return {_mm_or_pd(_mm_and_pd(m.v, ifSet.v), _mm_andnot_pd(m.v, otherwise.v))};
+}
+#endif
+// The lanes of `a` where the mask holds, +0 elsewhere.
+[[gnu::always_inline]] inline Lanes onlyWhere(LaneMask m, Lanes a) noexcept { return {REVOLVE_SIMD(and)(m.v, a.v)}; }
+// The lanes rounded to float, as static_cast<float> rounds each.
+#if defined(__AVX2__)
+[[gnu::always_inline]] inline void storeFloats(float* p, Lanes a) noexcept { _mm_storeu_ps(p, _mm256_cvtpd_ps(a.v)); }
+#else
+[[gnu::always_inline]] inline void storeFloats(float* p, Lanes a) noexcept {
+  _mm_storel_pi(reinterpret_cast<__m64*>(p), _mm_cvtpd_ps(a.v));
 }
 #endif
 // std::max and std::min lane by lane, with their exact semantics (the first argument when neither
