@@ -66,14 +66,15 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
       }
       EXPECT_GT(config["total_bytes"].get<double>(), 0.0);
     }
-    EXPECT_EQ(methods, (std::set<std::string>{"sphere", "mibit", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh"}))
+    EXPECT_EQ(methods, (std::set<std::string>{"sphere", "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear",
+                                               "kajiya", "mesh"}))
         << name;
     EXPECT_EQ(shape["matched"].size(), 16u) << name;  // four error levels in four timing modes
   }
   ASSERT_EQ(document["scaling"].size(), 1u);
   std::set<std::string> scaled;
   for (const json& config : document["scaling"][0]["configs"]) scaled.insert(config["method"].get<std::string>());
-  EXPECT_EQ(scaled, (std::set<std::string>{"mibit", "linear", "kajiya", "mesh"}));
+  EXPECT_EQ(scaled, (std::set<std::string>{"mibit", "mibit_binary", "linear", "kajiya", "mesh"}));
 
   const std::string csv = revolve::testing::readWholeFile(csvPath);
   EXPECT_EQ(csv.rfind("suite,shape,method,points,slices,mode,mrays_median", 0), 0u);

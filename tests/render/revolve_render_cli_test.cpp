@@ -3,6 +3,7 @@
 // where the problem is (JSON key path, or CSV file and line) and the rule, a non-zero exit, no
 // image, and leave an existing image untouched.
 #include "../io/scratch_directory.h"
+#include "support/process.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <gmock/gmock.h>
@@ -10,14 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cstring>
-#include <fcntl.h>
-#include <spawn.h>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
-
-extern char** environ;
 
 namespace revolve {
 namespace {
@@ -27,40 +22,12 @@ using ::testing::StartsWith;
 using testing::ScratchDirectory;
 using testing::readWholeFile;
 
-struct Result {
-  int status = -1;
-  std::string err;
-};
+using Result = testing::ProcessResult;
 
-// Runs revolve-render in `directory` with `args`; stdout and stderr go to a capture directory of
-// their own so that `directory` holds only what the tool made.
+// Runs revolve-render in `directory`; its stdout and stderr go to a capture directory of their own
+// so that `directory` holds only what the tool made.
 Result runRender(const std::string& directory, const std::vector<std::string>& args) {
-  const ScratchDirectory capture;
-  const std::string outPath = capture / "stdout", errPath = capture / "stderr";
-  std::vector<std::string> argv{REVOLVE_RENDER_PATH};
-  argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> pointers;
-  for (std::string& arg : argv) pointers.push_back(arg.data());
-  pointers.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  Result result;
-  if (spawned != 0) {
-    ADD_FAILURE() << "cannot run " << REVOLVE_RENDER_PATH << ": " << std::strerror(spawned);
-    return result;
-  }
-  int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return result;
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.err = readWholeFile(errPath);
-  return result;
+  return testing::runProcess(REVOLVE_RENDER_PATH, args, directory);
 }
 
 // A small valid scene: an inline profile and one from a CSV beside it.

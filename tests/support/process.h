@@ -23,7 +23,9 @@ struct ProcessResult {
   std::string out, err;
 };
 
-inline ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args) {
+// Runs `program` with `args`, in `directory` when one is given.
+inline ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args,
+                                const std::string& directory = "") {
   const ScratchDirectory capture;
   const std::string outPath = capture / "stdout", errPath = capture / "stderr";
   std::vector<std::string> argv{program};
@@ -37,6 +39,7 @@ inline ProcessResult runProcess(const std::string& program, const std::vector<st
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (!directory.empty()) posix_spawn_file_actions_addchdir_np(&actions, directory.c_str());
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
