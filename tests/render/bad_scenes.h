@@ -1,0 +1,87 @@
+// Bad scene files and options for revolve-render, shared by the in-process reader test (every
+// scene case) and the process test (one case of each kind the tool must refuse, and the options).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace revolve::testing {
+
+// A small valid scene: an inline profile and one from a CSV beside it.
+inline const std::string kScene = R"({
+  "camera": {"from": [0, -3, 1], "to": [0, 0, 0.5], "up": [0, 0, 1], "fov": 40, "width": 8, "height": 6, "spp": 2},
+  "profiles": {
+    "ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]},
+    "bottle": {"csv": "bottle.csv"}
+  },
+  "materials": {"white": {"type": "diffuse", "color": [0.8, 0.8, 0.8]}},
+  "objects": [
+    {"profile": "ball", "material": "white"},
+    {"profile": "bottle", "material": "white", "translate": [1, 0, 0], "rotate": [1, 0, 0, 10], "scale": 0.5}
+  ],
+  "quads": [{"corners": [[-5, -5, 0], [5, -5, 0], [5, 5, 0], [-5, 5, 0]], "material": "white"}],
+  "lights": [{"type": "sun", "direction": [0, 0.3, -1], "irradiance": [1, 1, 1]}],
+  "environment": {"color": [0.2, 0.2, 0.2]}
+})";
+inline const std::string kBottleCsv = "r,z\n0,0\n0.3,0\n0.3,0.6\n0.1,0.8\n0.1,1\n0,1\n";
+
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+struct BadCase {
+  const char* name;
+  std::string scene;                  // the scene file's text
+  std::vector<std::string> extraArgs;  // after the scene; "-o old.png" unless they name an output
+  std::string expected;               // a substring of the one stderr line
+  std::string csv = kBottleCsv;       // bottle.csv's text ("" = no file)
+  bool process = false;               // also run as a process (one case of each kind, and the options)
+};
+
+// How GoogleTest prints a case (its name, rather than its bytes, in test listings).
+inline void PrintTo(const BadCase& bad, std::ostream* out) { *out << bad.name; }
+
+inline std::vector<BadCase> badCases() {
+  return {
+      {"MissingKey", replaced(kScene, R"("fov": 40, )", ""), {}, R"(scene.json: camera: missing key "fov")", kBottleCsv, true},
+      {"WrongType", replaced(kScene, R"("fov": 40)", R"("fov": "wide")"), {}, "scene.json: camera.fov: expected a number, found string", kBottleCsv, true},
+      {"UnknownProfileName", replaced(kScene, R"("profile": "bottle")", R"("profile": "botle")"), {},
+       R"(scene.json: objects[1].profile: no profile named "botle")", kBottleCsv, true},
+      {"UnknownMaterialName", replaced(kScene, R"("profile": "ball", "material": "white")", R"("profile": "ball", "material": "paper")"), {},
+       R"(objects[0].material: no material named "paper")"},
+      {"UnknownKey", replaced(kScene, R"("color": [0.8, 0.8, 0.8])", R"("colour": [0.8, 0.8, 0.8])"), {},
+       "materials.white.colour: unknown key; expected one of: type, color", kBottleCsv, true},
+      {"UnknownTopLevelKey", replaced(kScene, R"("lights")", R"("lightz")"), {}, "scene.json: lightz: unknown key"},
+      {"SelfIntersectingProfile", replaced(kScene, "[0.5, 0.8], [0, 1]", "[0.5, 0.8], [0.7, 0.1], [0, 1]"), {},
+       "profiles.ball.points[1]: the segment from profile point 1", kBottleCsv, true},
+      {"NegativeRadius", replaced(kScene, "[0.5, 0.2]", "[-0.5, 0.2]"), {}, "profiles.ball.points[1]: profile point 1 (r = -0.5"},
+      {"BadCsvLine", kScene, {}, "profiles.bottle.csv: bottle.csv:3: r = \"abc\" is not a number", "r,z\n0,0\nabc,0\n0,1\n"},
+      {"MissingCsv", kScene, {}, "profiles.bottle.csv: bottle.csv:0: cannot open", "", true},
+      {"BadCsvProfile", kScene, {}, "profiles.bottle.csv: bottle.csv:3: profile point 1 (r = -1", "r,z\n0,0\n-1,0\n0,1\n"},
+      {"InvalidJson", kScene.substr(0, 200), {}, "scene.json: not valid JSON: parse error at line", kBottleCsv, true},
+      {"RepeatedKey", replaced(kScene, R"("fov": 40)", R"("fov": 40, "fov": 50)"), {}, R"(key "fov" appears twice)"},
+      {"UnknownMaterialType", replaced(kScene, R"("type": "diffuse")", R"("type": "plastic")"), {},
+       R"(materials.white.type: "plastic" is not a material type)"},
+      {"ReflectanceAboveOne", replaced(kScene, "[0.8, 0.8, 0.8]", "[1.5, 0.8, 0.8]"), {},
+       "materials.white.color[0]: 1.5 is out of range: a reflectance lies in [0, 1]"},
+      {"ZeroRotationAxis", replaced(kScene, "[1, 0, 0, 10]", "[0, 0, 0, 10]"), {}, "objects[1].rotate: the rotation axis is zero"},
+      {"NegativeScale", replaced(kScene, R"("scale": 0.5)", R"("scale": -0.5)"), {}, "objects[1].scale: -0.5 is not positive"},
+      {"DegenerateQuad", replaced(kScene, "[5, 5, 0], [-5, 5, 0]", "[5, -5, 0], [-5, 5, 0]"), {}, "quads[0].corners: corners 0, 1 and 2 are collinear"},
+      {"UpAlongTheView", replaced(kScene, R"("up": [0, 0, 1])", R"("up": [0, 3, -0.5])"), {}, "camera.up: is parallel to the view direction"},
+      {"UnknownLightType", replaced(kScene, R"("type": "sun")", R"("type": "spot")"), {}, R"(lights[0].type: "spot" is not a light type)"},
+      {"SunAngleTooWide", replaced(kScene, R"("irradiance": [1, 1, 1])", R"("irradiance": [1, 1, 1], "angle": 90)"), {},
+       "lights[0].angle: 90 is out of range"},
+      {"ObjectsNotAList", replaced(kScene, R"("objects": [)", R"("objects": {"a": )"), {}, "not valid JSON"},
+      {"UnwritableOutput", kScene, {"-o", "no/such/folder/out.png"}, "no/such/folder/out.png: cannot create a file in no/such/folder", kBottleCsv, true},
+      {"UnknownImageExtension", kScene, {"-o", "out.jpg"}, R"(out.jpg: unsupported image extension ".jpg")", kBottleCsv, true},
+      {"UnwritableStats", kScene, {"--stats", "no/such/stats.json"}, "no/such/stats.json: cannot create a file", kBottleCsv, true},
+  };
+}
+
+}  // namespace revolve::testing
