@@ -1,6 +1,7 @@
 // Tracing the same shapes from every thread at once gives bit-identical answers to one thread, and
 // the counters of a counting geometry add up to exactly the single-threaded totals.
 #include "support/test_profiles.h"
+#include "support/test_scale.h"
 
 #include <revolve/revolve.h>
 
@@ -106,7 +107,7 @@ TEST(ConcurrencyTest, CountersOfOneGeometryLoseNoUpdatesUnderContention) {
   Geometry geometry(device, shape, Geometry::Options{true});
   rtcAttachGeometry(scene, geometry.handle());
   rtcCommitScene(scene);
-  const std::vector<Ray> rays = testing::incoherentRays(shape, random, 200000);
+  const std::vector<Ray> rays = testing::incoherentRays(shape, random, testing::scaledRays(200000));
   for (const Ray& ray : rays) traceEmbree(scene, ray);
   const Stats once = geometry.stats();
   for (int round = 0; round < 4; ++round) {

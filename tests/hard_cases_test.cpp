@@ -2,6 +2,7 @@
 // search (MIBIT with each shell kind, linear, Kajiya). Each test prints "hard case: rays, wrong"
 // for README's table. Expected answers come from geometry or from the long-double oracle.
 #include "support/hard_profiles.h"
+#include "support/test_scale.h"
 #include "support/reference.h"
 #include "support/test_profiles.h"
 
@@ -355,7 +356,7 @@ TEST(HardCasesTest, EveryHitLiesOnTheSurfaceWithAUnitConsistentNormal) {
       const Shape shape(Profile(closed.points), variant.options);
       const double size = norm(shape.bounds().upper);
       // The oracle's meridian distance is O(points) a call: fewer rays on the 20,001-point profile.
-      for (const Ray& ray : testing::incoherentRays(shape, random, closed.points.size() > 1000 ? 300 : 4000)) {
+      for (const Ray& ray : testing::incoherentRays(shape, random, testing::scaledRays(closed.points.size() > 1000 ? 300 : 4000))) {
         const std::optional<Hit> hit = intersect(shape, ray);
         if (!hit) continue;
         ++fired;

@@ -3,6 +3,7 @@
 // any difference is a node pruned that held the nearest hit. Bit-exact agreement is expected
 // because each segment's hits are computed over the same range by every method (shape_search.h).
 #include "support/hard_profiles.h"
+#include "support/test_scale.h"
 #include "support/test_profiles.h"
 
 #include <revolve/revolve.h>
@@ -73,8 +74,8 @@ TEST(MethodAgreementTest, MibitAndKajiyaMatchLinearScanHitForHit) {
     std::vector<Shape> shapes;
     for (const Variant& variant : compared) shapes.emplace_back(profile, variant.options);
 
-    std::vector<Ray> rays = testing::incoherentRays(linear, random, 70000);
-    const std::vector<Ray> awkward = testing::axisAlignedRays(linear, random, 15000);
+    std::vector<Ray> rays = testing::incoherentRays(linear, random, testing::scaledRays(70000));
+    const std::vector<Ray> awkward = testing::axisAlignedRays(linear, random, testing::scaledRays(15000));
     rays.insert(rays.end(), awkward.begin(), awkward.end());
     // Some rays start inside the shape, and some stop short of it.
     for (std::size_t i = 0; i < rays.size(); i += 7) rays[i].tnear = 0.5f;
@@ -110,7 +111,7 @@ TEST(MethodAgreementTest, OccludedAgreesWithIntersect) {
     const Profile profile(named.points);
     for (Method method : {Method::mibit, Method::linear, Method::kajiya}) {
       const Shape shape(profile, {method});
-      for (const Ray& ray : testing::incoherentRays(shape, random, 3000)) {
+      for (const Ray& ray : testing::incoherentRays(shape, random, testing::scaledRays(3000))) {
         EXPECT_EQ(occluded(shape, ray), intersect(shape, ray).has_value()) << describe(ray);
       }
     }

@@ -2,6 +2,7 @@
 // yet must find the same surface again where it really lies ahead (concave profiles). The verdict
 // on every near hit comes from the long-double oracle on the very same float ray.
 #include "support/hard_profiles.h"
+#include "support/test_scale.h"
 #include "support/reference.h"
 #include "support/test_profiles.h"
 
@@ -68,12 +69,12 @@ struct Variant {
 TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhere) {
   constexpr std::uint64_t kSeed = 0x5ecd;
   const Variant variants[] = {
-      {"mibit/cylinder", {Method::mibit, ShellKind::cylinder}, 60000},  // the default (wide) carries the million
-      {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}, 6000},
-      {"mibit/cone", {Method::mibit, ShellKind::cone}, 6000},
-      {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, 6000},
-      {"linear", {Method::linear}, 3000},
-      {"kajiya", {Method::kajiya}, 6000},
+      {"mibit/cylinder", {Method::mibit, ShellKind::cylinder}, testing::scaledRays(60000)},  // the default (wide) carries the million
+      {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}, testing::scaledRays(6000)},
+      {"mibit/cone", {Method::mibit, ShellKind::cone}, testing::scaledRays(6000)},
+      {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, testing::scaledRays(6000)},
+      {"linear", {Method::linear}, testing::scaledRays(3000)},
+      {"kajiya", {Method::kajiya}, testing::scaledRays(6000)},
   };
   for (const Variant& variant : variants) {
     std::mt19937_64 random(kSeed);
@@ -120,8 +121,8 @@ TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhe
     EXPECT_GT(concaveReHits, variant.primaries / 10) << variant.name;
     EXPECT_GT(total.reHitsChecked, variant.primaries / 10) << variant.name;
     EXPECT_EQ(total.reHitsWrong, 0u) << variant.name;
-    if (variant.primaries == 60000) {  // the default
-      EXPECT_GE(total.spawned, 1'000'000u);
+    if (variant.primaries == testing::scaledRays(60000)) {  // the default
+      EXPECT_GE(total.spawned, testing::scaledRays(1'000'000));
     }
   }
 }
