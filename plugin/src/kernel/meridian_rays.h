@@ -56,8 +56,10 @@ inline unsigned setUpMeridianRays(const ShapeFrame& frame, const RayLanes& in, M
                                                         abs(tCentre) * length);
 
   alignas(32) double fields[17][kLanes];
-  const Lanes all[17] = {qx, qy, qz, dx, dy, dz, tCentre, length, lo, hi, a, cross, sAxis, invDz, invA, beta, lineSlack};
-  for (int f = 0; f < 17; ++f) store(fields[f], all[f]);
+  store(fields[0], qx), store(fields[1], qy), store(fields[2], qz), store(fields[3], dx), store(fields[4], dy);
+  store(fields[5], dz), store(fields[6], tCentre), store(fields[7], length), store(fields[8], lo), store(fields[9], hi);
+  store(fields[10], a), store(fields[11], cross), store(fields[12], sAxis), store(fields[13], invDz);
+  store(fields[14], invA), store(fields[15], beta), store(fields[16], lineSlack);
   for (int lane = 0; lane < kLanes; ++lane) {
     MeridianRay& ray = out[lane];
     ray.ox = fields[0][lane];
