@@ -18,6 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {
     "mibit": dict(color="tab:blue", marker="o", label="MIBIT (cylinder shells)"),
+    "mibit_binary": dict(color="tab:green", marker="x", label="MIBIT (cylinder shells, the paper's binary tree)"),
     "mibit_cone": dict(color="tab:cyan", marker="v", label="MIBIT (cone shells)"),
     "mibit_hybrid": dict(color="tab:purple", marker="^", label="MIBIT (hybrid shells)"),
     "linear": dict(color="tab:gray", marker="s", label="Wang's linear scan"),

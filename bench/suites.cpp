@@ -149,6 +149,7 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
     bench.add({MethodKind::sphere}, allModes, timer);
     for (int n : ladders.mibitPoints) {
       bench.add({MethodKind::mibit, ShellKind::cylinder, n}, allModes, timer);
+      bench.add({MethodKind::mibit, ShellKind::cylinder, n, 0, true}, incoherentOnly, timer);
       bench.add({MethodKind::mibit, ShellKind::cone, n}, incoherentOnly, timer);
       bench.add({MethodKind::mibit, ShellKind::hybrid, n}, incoherentOnly, timer);
     }
@@ -184,6 +185,7 @@ std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& setting
   std::fprintf(stderr, "  building and measuring errors\n");
   for (int n : points) {
     bench.add({MethodKind::mibit, ShellKind::cylinder, n}, modes, timer);
+    bench.add({MethodKind::mibit, ShellKind::cylinder, n, 0, true}, modes, timer);
     bench.add({MethodKind::linear, ShellKind::cylinder, n}, modes, timer);
     bench.add({MethodKind::kajiya, ShellKind::cylinder, n}, modes, timer);
     // The mesh of the same profile with just enough slices that its facets are no coarser than its
@@ -207,7 +209,7 @@ void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {
         const std::optional<ErrorSummary>& error = camera ? c.camera : c.incoherent;
         const auto speed = c.speed.find(mode);
         if (!error || speed == c.speed.end() || error->hits == 0 || !(error->residualMax <= level)) continue;
-        const bool mibit = c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder;
+        const bool mibit = c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary;
         const bool mesh = c.config.kind == MethodKind::mesh;
         if (!mibit && !mesh) continue;
         std::optional<std::size_t>& fastest = mibit ? row.mibit : row.mesh;

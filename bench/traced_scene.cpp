@@ -8,7 +8,8 @@ namespace revolve::bench {
 std::string MethodConfig::method() const {
   switch (kind) {
     case MethodKind::mibit:
-      return shell == ShellKind::cylinder ? "mibit" : shell == ShellKind::cone ? "mibit_cone" : "mibit_hybrid";
+      if (shell == ShellKind::cylinder) return binary ? "mibit_binary" : "mibit";
+      return shell == ShellKind::cone ? "mibit_cone" : "mibit_hybrid";
     case MethodKind::linear: return "linear";
     case MethodKind::kajiya: return "kajiya";
     case MethodKind::mesh: return "mesh";
@@ -52,6 +53,7 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
                        : config.kind == MethodKind::kajiya ? Method::kajiya
                                                            : Method::mibit;
       options.shell = config.shell;
+      options.wideNodes = !config.binary;
       shape_ = std::make_unique<Shape>(Profile(profile.sample(config.points)), options);
       geometry_ = std::make_unique<Geometry>(device, *shape_);
       revolveBytes_ = shape_->memoryBytes();

@@ -20,7 +20,9 @@ struct MethodConfig {
   ShellKind shell = ShellKind::cylinder;  // MIBIT only
   int points = 0;                         // profile points (not for the analytic sphere)
   int slices = 0;                         // meshes only
-  std::string method() const;             // "mibit", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere"
+  bool binary = false;                    // MIBIT with the paper's binary tree (BuildOptions::wideNodes off)
+  // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere"
+  std::string method() const;
   std::string label() const;              // method and resolution, e.g. "mesh 64x128"
 };
 
