@@ -39,7 +39,7 @@ def wall(x0, y0, x1, y1):
 
 def robot_world():
     profiles = {
-        "pole": {"points": pts(pole(0.05, 2.2))},
+        "pole": {"points": pts(pole(0.1, 2.2))},
         "barrel": {"points": pts(barrel())},
         "bin": {"points": pts(waste_bin())},
         "cone": {"points": pts(traffic_cone())},
@@ -132,6 +132,9 @@ def sensors_and_poses():
         f.write("x,y,yaw\n")
         for x, y, yaw in path:
             f.write(f"{x},{y},{yaw}\n")
+    # One pose at the corner, facing into the hall: the README's plot.
+    with open(os.path.join(EXAMPLES, "corner.csv"), "w") as f:
+        f.write("x,y,yaw\n9.6,1.8,1.0\n")
 
 
 if __name__ == "__main__":

@@ -26,7 +26,7 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, robot, poses, output;
+  std::string scene, robot, poses, output, ground;
   int threads = 0;
 };
 
@@ -64,6 +64,12 @@ void run(const Options& options) {
     throw std::runtime_error(options.output + ": unsupported extension \"" + extension + "\"; the clearance table is a .csv");
   }
   const RobotShape shape = parseRobot(options.robot);
+  double ground = -INFINITY;  // default: every surface is an obstacle
+  if (!options.ground.empty()) {
+    const std::optional<double> value = io::csv::parseNumber<double>(options.ground);
+    if (!value || !std::isfinite(*value)) throw std::runtime_error("--ground " + io::csv::quote(options.ground) + " is not a finite number");
+    ground = *value;
+  }
   const io::SceneDescription description = io::readScene(options.scene);
   for (const io::SceneProfile& profile : description.profiles) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-clearance: warning: %s\n", warning.c_str());
@@ -71,7 +77,7 @@ void run(const Options& options) {
   const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
   io::checkWritable(options.output);
 
-  const robot::ClearanceMap map(description);
+  const robot::ClearanceMap map(description, ground);
   std::vector<robot::SceneClearance> results(poses.size());
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
@@ -113,7 +119,11 @@ int main(int argc, char** argv) {
       ->required();
   app.add_option("--poses", options.poses, "robot poses (CSV, header x,y,z,yaw or x,y,yaw)")->required();
   app.add_option("-o,--output", options.output, "clearance table to write (.csv)")->required();
+  app.add_option("--ground", options.ground,
+                 "height of the ground the robot drives on: surfaces wholly at or below it are not obstacles (default: none)");
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
+  // Argument errors too are one line, like every other error of the tool.
+  app.failure_message([](const CLI::App*, const CLI::Error& error) { return std::string("revolve-clearance: ") + error.what() + " (see --help)\n"; });
   CLI11_PARSE(app, argc, argv);
   try {
     run(options);

@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")->check(CLI::Range(3u, 1u << 16))->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads (default: all); the scan does not depend on it")->check(CLI::Range(1, 1024));
+  // Argument errors too are one line, like every other error of the tool.
+  app.failure_message([](const CLI::App*, const CLI::Error& error) { return std::string("revolve-lidar: ") + error.what() + " (see --help)\n"; });
   CLI11_PARSE(app, argc, argv);
   try {
     run(options);

@@ -51,7 +51,8 @@ void keep(SceneClearance& best, const ObstacleClearance& found, std::int64_t obj
 
 }  // namespace
 
-ClearanceMap::ClearanceMap(const io::SceneDescription& scene) : device_(app::newDevice()), scene_(app::newScene(device_.get())) {
+ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
+    : device_(app::newDevice()), scene_(app::newScene(device_.get())) {
   std::vector<const Shape*> shapeOf(scene.profiles.size(), nullptr);
   for (const io::SceneObject& object : scene.objects) {
     if (shapeOf[object.profile] == nullptr) {
@@ -62,6 +63,8 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene) : device_(app::new
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     Obstacle obstacle{std::int64_t(i), PlacedShape(*shapeOf[scene.objects[i].profile], scene.objects[i].transform), {}, {}};
     obstacle.box = obstacle.shape->worldBox();
+    // The box is padded outwards, so an object reaching exactly down to the ground is not left out.
+    if (obstacle.box.upper[2] <= ground) continue;
     obstacles_.push_back(std::move(obstacle));
   }
   for (std::size_t q = 0; q < scene.quads.size(); ++q) {
@@ -72,6 +75,7 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene) : device_(app::new
         obstacle.box.lower[axis] = std::min({c[0][axis], c[a][axis], c[b][axis]});
         obstacle.box.upper[axis] = std::max({c[0][axis], c[a][axis], c[b][axis]});
       }
+      if (obstacle.box.upper[2] <= ground) continue;
       obstacles_.push_back(obstacle);
     }
   }

@@ -28,7 +28,9 @@ struct SceneClearance {
 
 class ClearanceMap {
  public:
-  explicit ClearanceMap(const io::SceneDescription& scene);
+  // Surfaces lying wholly at or below `ground` (world height) are the ground the robot drives on,
+  // not obstacles: they are left out. The default leaves nothing out.
+  explicit ClearanceMap(const io::SceneDescription& scene, double ground = -INFINITY);
   ~ClearanceMap();
   ClearanceMap(const ClearanceMap&) = delete;
   ClearanceMap& operator=(const ClearanceMap&) = delete;

@@ -216,8 +216,13 @@ void writeScanPlot(const std::string& path, const ScanPlotInput& input) {
     const Vec3d heading = f.rotate({1, 0, 0});
     const Pixel o = at(f.origin[0], f.origin[1]);
     const double h = std::hypot(heading[0], heading[1]);
-    if (h > 0) canvas.line(o, {o.x + 22 * heading[0] / h, o.y - 22 * heading[1] / h}, 3, kSensor);
-    canvas.disc(o, 6, kSensor);
+    // White under the marker, so that it stands out of the beams' fan.
+    if (h > 0) {
+      canvas.line(o, {o.x + 28 * heading[0] / h, o.y - 28 * heading[1] / h}, 6, {1, 1, 1, 1});
+      canvas.line(o, {o.x + 26 * heading[0] / h, o.y - 26 * heading[1] / h}, 3, kSensor);
+    }
+    canvas.disc(o, 8.5, {1, 1, 1, 1});
+    canvas.disc(o, 6.5, kSensor);
   }
 
   // Frame, axis labels, title and legend.

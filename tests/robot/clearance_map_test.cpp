@@ -220,6 +220,20 @@ TEST(ClearanceMapTest, TheBvhFindsWhatEveryObstacleGivesInRobotWorld) {
   EXPECT_LT(collisions, 150);
 }
 
+TEST(ClearanceMapTest, TheGroundIsNotAnObstacle) {
+  // A floor at 0, a table top at 0.75 and a pole standing on the floor: with the ground at 0 the
+  // floor is left out, the pole (reaching down to 0) and the table top are not.
+  const std::array<Vec3d, 4> floor{{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}};
+  const std::array<Vec3d, 4> top{{{2, -1, 0.75}, {3, -1, 0.75}, {3, 1, 0.75}, {2, 1, 0.75}}};
+  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({-2, 0, 0}), "pole"}}, {floor, top});
+  const robot::ClearanceMap grounded(scene, 0.0);
+  EXPECT_EQ(grounded.obstacleCount(), 1u + 2);  // the pole and the table top's two triangles
+  const SceneClearance c = grounded.query({0, 0, 0.05, 1.2, 0.3});
+  EXPECT_NEAR(c.clearance, 2 - 0.25 - 0.3, kExact);
+  EXPECT_EQ(c.object, 0);
+  EXPECT_NEAR(robot::ClearanceMap(scene).query({0, 0, 0.05, 1.2, 0.3}).clearance, 0.05, kExact);  // the floor, by default
+}
+
 TEST(ClearanceMapTest, EmptySceneHasInfiniteClearance) {
   const robot::ClearanceMap map(testing::sceneOf({}));
   const SceneClearance c = map.query({0, 0, 0, 1, 0.3});
