@@ -8,6 +8,7 @@
 #include "io/text_files.h"
 #include "robot/clearance_map.h"
 #include "robot/picking.h"
+#include "robot/robot_argument.h"
 
 #include <CLI/CLI.hpp>
 #include <tbb/parallel_for.h>
@@ -30,40 +31,13 @@ struct Options {
   int threads = 0;
 };
 
-struct RobotShape {
-  double radius, zMin, zMax;  // heights relative to each pose's z
-};
-
-// --robot RADIUS,ZMIN,ZMAX: three finite numbers, RADIUS > 0, ZMIN < ZMAX.
-RobotShape parseRobot(const std::string& text) {
-  const std::vector<std::string_view> fields = io::csv::splitFields(text);
-  if (fields.size() != 3) {
-    throw std::runtime_error("--robot " + io::csv::quote(text) + ": expected RADIUS,ZMIN,ZMAX (3 comma-separated numbers), found " +
-                             std::to_string(fields.size()));
-  }
-  const char* names[3] = {"RADIUS", "ZMIN", "ZMAX"};
-  double values[3];
-  for (int i = 0; i < 3; ++i) {
-    const std::optional<double> value = io::csv::parseNumber<double>(fields[i]);
-    if (!value || !std::isfinite(*value)) {
-      throw std::runtime_error("--robot: " + std::string(names[i]) + " = " + io::csv::quote(fields[i]) + " is not a finite number");
-    }
-    values[i] = *value;
-  }
-  if (!(values[0] > 0)) throw std::runtime_error("--robot: RADIUS = " + io::csv::quote(fields[0]) + " is not positive");
-  if (!(values[1] < values[2])) {
-    throw std::runtime_error("--robot: ZMAX = " + io::csv::quote(fields[2]) + " is not above ZMIN = " + io::csv::quote(fields[1]));
-  }
-  return {values[0], values[1], values[2]};
-}
-
 void run(const Options& options) {
   std::string extension = std::filesystem::path(options.output).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (extension != ".csv") {
     throw std::runtime_error(options.output + ": unsupported extension \"" + extension + "\"; the clearance table is a .csv");
   }
-  const RobotShape shape = parseRobot(options.robot);
+  const robot::RobotDimensions shape = robot::parseRobotArgument(options.robot);
   double ground = -INFINITY;  // default: every surface is an obstacle
   if (!options.ground.empty()) {
     const std::optional<double> value = io::csv::parseNumber<double>(options.ground);

@@ -3,10 +3,12 @@
 // against dense sampling of the surface where the answer is a lower bound (tilted shapes, sloping
 // quads: never more clearance than the samples show), and the BVH search against every obstacle.
 #include "robot/clearance_map.h"
+#include "robot/robot_argument.h"
 #include "robot_scenes.h"
 
 #include "io/scene_file.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -232,6 +234,32 @@ TEST(ClearanceMapTest, TheGroundIsNotAnObstacle) {
   EXPECT_NEAR(c.clearance, 2 - 0.25 - 0.3, kExact);
   EXPECT_EQ(c.object, 0);
   EXPECT_NEAR(robot::ClearanceMap(scene).query({0, 0, 0.05, 1.2, 0.3}).clearance, 0.05, kExact);  // the floor, by default
+}
+
+TEST(RobotArgumentTest, ReadsTheRobotAndNamesEachRule) {
+  const robot::RobotDimensions r = robot::parseRobotArgument(" 0.3, 0.05 ,1.2");
+  EXPECT_EQ(r.radius, 0.3);
+  EXPECT_EQ(r.zMin, 0.05);
+  EXPECT_EQ(r.zMax, 1.2);
+  const std::pair<const char*, const char*> bad[] = {
+      {"0.3,1.2", "--robot \"0.3,1.2\": expected RADIUS,ZMIN,ZMAX (3 comma-separated numbers), found 2"},
+      {"0.3,low,1.2", "--robot: ZMIN = \"low\" is not a finite number"},
+      {"0,0,1", "--robot: RADIUS = \"0\" is not positive"},
+      {"-0.3,0,1", "--robot: RADIUS = \"-0.3\" is not positive"},
+      {"0.3,1.2,0.05", "--robot: ZMAX = \"0.05\" is not above ZMIN = \"1.2\""},
+      {"0.3,0.5,0.5", "--robot: ZMAX = \"0.5\" is not above ZMIN = \"0.5\""},
+      {"0.3,0,inf", "--robot: ZMAX = \"inf\" is not a finite number"},
+      {"nan,0,1", "--robot: RADIUS = \"nan\" is not a finite number"},
+  };
+  for (const auto& [text, expected] : bad) {
+    SCOPED_TRACE(text);
+    try {
+      robot::parseRobotArgument(text);
+      ADD_FAILURE() << "accepted";
+    } catch (const std::runtime_error& error) {
+      EXPECT_THAT(error.what(), ::testing::HasSubstr(expected));
+    }
+  }
 }
 
 TEST(ClearanceMapTest, EmptySceneHasInfiniteClearance) {
