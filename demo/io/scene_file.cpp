@@ -1,5 +1,6 @@
 #include "io/scene_file.h"
 
+#include "io/json_reader.h"
 #include "io/text_files.h"
 
 #include <nlohmann/json.hpp>
@@ -7,140 +8,39 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <initializer_list>
 #include <optional>
-#include <set>
 #include <string>
 
 namespace revolve::io {
 namespace {
 
-// ordered_json keeps the file's order of profiles and materials, so indices and messages follow it.
-using Json = nlohmann::ordered_json;
+using json::child;
+using json::element;
+using json::Json;
+using json::quotedText;
+using Reader = json::Reader<SceneError>;
 
-// Text from the file, made safe for a one-line message: control bytes become '?', and it is cut
-// at 40 bytes so that a binary key cannot flood the terminal.
-std::string printable(std::string_view text) {
-  std::string out;
-  for (const char c : text.substr(0, 40)) {
-    const auto byte = static_cast<unsigned char>(c);
-    out += (byte >= 0x20 && byte != 0x7f) ? c : '?';
-  }
-  if (text.size() > 40) out += "...";
-  return out;
-}
-std::string quotedText(std::string_view text) {
-  std::string out = "\"";
-  out += printable(text);
-  out += "\"";
-  return out;
+std::string degreesText(double value) { return json::numberText(value); }
+
+Vec3d nonZero(const Reader& in, const Json& value, const std::string& path) {
+  const Vec3d v = in.vec3(value, path);
+  if (v[0] == 0 && v[1] == 0 && v[2] == 0) in.fail(path, "the vector is zero; a direction is needed");
+  return v;
 }
 
-std::string child(const std::string& path, std::string_view key) {
-  return path.empty() ? printable(key) : path + "." + printable(key);
-}
-std::string element(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
-
-std::string joined(std::initializer_list<std::string_view> names) {
-  std::string out;
-  for (const std::string_view name : names) {
-    if (!out.empty()) out += ", ";
-    out += name;
-  }
-  return out;
-}
-
-std::string degreesText(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-// Typed access to the JSON tree with key paths for messages.
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-    throw SceneError(file_ + ": " + (path.empty() ? "" : path + ": ") + problem);
-  }
-
-  const Json& object(const Json& value, const std::string& path, std::initializer_list<std::string_view> allowed) const {
-    if (!value.is_object()) fail(path, std::string("expected an object, found ") + value.type_name());
-    for (const auto& [key, ignored] : value.items()) {
-      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-        fail(child(path, key), "unknown key; expected one of: " + joined(allowed));
-      }
+// A colour: three numbers each in [0, hi] (hi = 1 for reflectances, unbounded for radiance).
+Rgb rgb(const Reader& in, const Json& value, const std::string& path, double hi) {
+  if (!value.is_array() || value.size() != 3) in.fail(path, "expected a colour [r, g, b]");
+  Rgb c;
+  for (std::size_t i = 0; i < 3; ++i) {
+    c[i] = in.number(value[i], element(path, i));
+    if (!(c[i] >= 0 && c[i] <= hi)) {
+      in.fail(element(path, i), degreesText(c[i]) + (hi == 1 ? " is out of range: a reflectance lies in [0, 1]"
+                                                            : " is negative: light cannot be"));
     }
-    return value;
   }
-
-  const Json& required(const Json& object, const std::string& path, const char* key) const {
-    const auto found = object.find(key);
-    if (found == object.end()) fail(path, std::string("missing key \"") + key + "\"");
-    return *found;
-  }
-  const Json* optional(const Json& object, const char* key) const {
-    const auto found = object.find(key);
-    return found == object.end() ? nullptr : &*found;
-  }
-
-  const Json& array(const Json& value, const std::string& path) const {
-    if (!value.is_array()) fail(path, std::string("expected an array, found ") + value.type_name());
-    return value;
-  }
-
-  double number(const Json& value, const std::string& path) const {
-    if (!value.is_number()) fail(path, std::string("expected a number, found ") + value.type_name());
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(path, "the number is beyond double's range");
-    return x;
-  }
-  double numberIn(const Json& value, const std::string& path, double lo, double hi, const char* rule) const {
-    const double x = number(value, path);
-    if (!(x >= lo && x <= hi)) fail(path, degreesText(x) + " is out of range: " + rule);
-    return x;
-  }
-  int integerIn(const Json& value, const std::string& path, int lo, int hi) const {
-    const double x = number(value, path);
-    if (x != std::floor(x)) fail(path, degreesText(x) + " is not a whole number");
-    if (!(x >= lo && x <= hi)) {
-      fail(path, degreesText(x) + " is out of range: must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    }
-    return int(x);
-  }
-  std::string string(const Json& value, const std::string& path) const {
-    if (!value.is_string()) fail(path, std::string("expected a string, found ") + value.type_name());
-    return value.get<std::string>();
-  }
-  Vec3d vec3(const Json& value, const std::string& path) const {
-    if (!value.is_array() || value.size() != 3) fail(path, "expected an array of 3 numbers [x, y, z]");
-    return {number(value[0], element(path, 0)), number(value[1], element(path, 1)), number(value[2], element(path, 2))};
-  }
-  Vec3d nonZero(const Json& value, const std::string& path) const {
-    const Vec3d v = vec3(value, path);
-    if (v[0] == 0 && v[1] == 0 && v[2] == 0) fail(path, "the vector is zero; a direction is needed");
-    return v;
-  }
-  // A colour: three numbers each in [0, hi] (hi = 1 for reflectances, unbounded for radiance).
-  Rgb rgb(const Json& value, const std::string& path, double hi) const {
-    if (!value.is_array() || value.size() != 3) fail(path, "expected a colour [r, g, b]");
-    Rgb c;
-    for (std::size_t i = 0; i < 3; ++i) {
-      c[i] = number(value[i], element(path, i));
-      if (!(c[i] >= 0 && c[i] <= hi)) {
-        fail(element(path, i), degreesText(c[i]) + (hi == 1 ? " is out of range: a reflectance lies in [0, 1]"
-                                                             : " is negative: light cannot be"));
-      }
-    }
-    return c;
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
-};
+  return c;
+}
 
 constexpr double kUnbounded = 1.0e300;
 
@@ -159,7 +59,7 @@ SceneCamera readCamera(const Reader& in, const Json& json) {
   SceneCamera camera;
   camera.from = in.vec3(in.required(json, path, "from"), "camera.from");
   camera.to = in.vec3(in.required(json, path, "to"), "camera.to");
-  camera.up = in.nonZero(in.required(json, path, "up"), "camera.up");
+  camera.up = nonZero(in, in.required(json, path, "up"), "camera.up");
   camera.fovDegrees = in.number(in.required(json, path, "fov"), "camera.fov");
   if (!(camera.fovDegrees > 0 && camera.fovDegrees < 180)) {
     in.fail("camera.fov", degreesText(camera.fovDegrees) + " is out of range: the vertical field of view lies in (0, 180) degrees");
@@ -237,11 +137,11 @@ SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json
   if (type == "diffuse" || type == "mirror") {
     in.object(json, path, {"type", "color"});
     material.type = type == "diffuse" ? MaterialType::diffuse : MaterialType::mirror;
-    material.color = in.rgb(in.required(json, path, "color"), child(path, "color"), 1);
+    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), 1);
   } else if (type == "metal") {
     in.object(json, path, {"type", "color", "roughness"});
     material.type = MaterialType::metal;
-    material.color = in.rgb(in.required(json, path, "color"), child(path, "color"), 1);
+    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), 1);
     material.roughness = in.numberIn(in.required(json, path, "roughness"), child(path, "roughness"), 0, 1,
                                      "roughness lies in [0, 1]");
   } else if (type == "glass") {
@@ -249,7 +149,7 @@ SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json
     material.type = MaterialType::glass;
     material.ior = in.numberIn(in.required(json, path, "ior"), child(path, "ior"), 1, 4,
                                "an index of refraction lies in [1, 4]");
-    if (const Json* tint = in.optional(json, "tint")) material.tint = in.rgb(*tint, child(path, "tint"), 1);
+    if (const Json* tint = in.optional(json, "tint")) material.tint = rgb(in, *tint, child(path, "tint"), 1);
   } else {
     in.fail(child(path, "type"), quotedText(type) + " is not a material type; expected one of: diffuse, metal, mirror, glass");
   }
@@ -304,12 +204,12 @@ SceneLight readLight(const Reader& in, const Json& json, const std::string& path
     in.object(json, path, {"type", "position", "intensity"});
     light.type = LightType::point;
     light.position = in.vec3(in.required(json, path, "position"), child(path, "position"));
-    light.intensity = in.rgb(in.required(json, path, "intensity"), child(path, "intensity"), kUnbounded);
+    light.intensity = rgb(in, in.required(json, path, "intensity"), child(path, "intensity"), kUnbounded);
   } else if (type == "sun") {
     in.object(json, path, {"type", "direction", "irradiance", "angle"});
     light.type = LightType::sun;
-    light.direction = normalised(in.nonZero(in.required(json, path, "direction"), child(path, "direction")));
-    light.irradiance = in.rgb(in.required(json, path, "irradiance"), child(path, "irradiance"), kUnbounded);
+    light.direction = normalised(nonZero(in, in.required(json, path, "direction"), child(path, "direction")));
+    light.irradiance = rgb(in, in.required(json, path, "irradiance"), child(path, "irradiance"), kUnbounded);
     if (const Json* angle = in.optional(json, "angle")) {
       light.angleDegrees = in.numberIn(*angle, child(path, "angle"), 0, 45, "the sun's apparent diameter lies in [0, 45] degrees");
     }
@@ -327,49 +227,21 @@ SceneEnvironment readEnvironment(const Reader& in, const Json& json) {
   if ((color != nullptr) == (sky != nullptr)) in.fail(path, "needs exactly one of \"color\" or \"sky\"");
   SceneEnvironment environment;
   if (color != nullptr) {
-    environment.color = in.rgb(*color, "environment.color", kUnbounded);
+    environment.color = rgb(in, *color, "environment.color", kUnbounded);
     return environment;
   }
   in.object(*sky, "environment.sky", {"zenith", "horizon"});
   environment.sky = true;
-  environment.zenith = in.rgb(in.required(*sky, "environment.sky", "zenith"), "environment.sky.zenith", kUnbounded);
-  environment.horizon = in.rgb(in.required(*sky, "environment.sky", "horizon"), "environment.sky.horizon", kUnbounded);
+  environment.zenith = rgb(in, in.required(*sky, "environment.sky", "zenith"), "environment.sky.zenith", kUnbounded);
+  environment.horizon = rgb(in, in.required(*sky, "environment.sky", "horizon"), "environment.sky.horizon", kUnbounded);
   return environment;
-}
-
-// nlohmann keeps the last of repeated keys silently; a repeated key is more likely a mistake.
-Json parseJson(std::string_view text, const Reader& in) {
-  std::vector<std::set<std::string>> keysOfOpenObjects;
-  const Json::parser_callback_t rejectRepeatedKeys = [&](int, Json::parse_event_t event, Json& parsed) {
-    if (event == Json::parse_event_t::object_start) {
-      keysOfOpenObjects.emplace_back();
-    } else if (event == Json::parse_event_t::object_end) {
-      if (!keysOfOpenObjects.empty()) keysOfOpenObjects.pop_back();
-    } else if (event == Json::parse_event_t::key && !keysOfOpenObjects.empty()) {
-      const std::string key = parsed.get<std::string>();
-      if (!keysOfOpenObjects.back().insert(key).second) {
-        in.fail("", "key " + quotedText(key) + " appears twice in one object; each key may appear once");
-      }
-    }
-    return true;
-  };
-  try {
-    return Json::parse(text.begin(), text.end(), rejectRepeatedKeys);
-  } catch (const Json::exception& error) {
-    std::string message = error.what();
-    const std::size_t bracket = message.find("] ");
-    if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) message = message.substr(bracket + 2);
-    std::string safe;
-    for (const char c : message.substr(0, 300)) safe += (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) ? c : '?';
-    in.fail("", "not valid JSON: " + safe);
-  }
 }
 
 }  // namespace
 
 SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
   const Reader in(file);
-  const Json root = parseJson(text, in);
+  const Json root = json::parse(text, in);
   in.object(root, "", {"description", "camera", "profiles", "materials", "objects", "quads", "lights", "environment"});
   SceneDescription scene;
   scene.file = file;

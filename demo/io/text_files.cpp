@@ -1,5 +1,7 @@
 #include "io/text_files.h"
 
+#include "io/csv_fields.h"
+
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -16,48 +18,10 @@
 namespace revolve::io {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> splitFields(std::string_view line) {
-  std::vector<std::string_view> fields;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = line.find(',', start)) != std::string_view::npos; start = comma + 1) {
-    fields.push_back(trim(line.substr(start, comma - start)));
-  }
-  fields.push_back(trim(line.substr(start)));
-  return fields;
-}
-
-// Quoted for messages, shortened so that a binary line cannot flood the terminal.
-std::string quote(std::string_view text) {
-  std::string out = "\"";
-  for (char c : text.substr(0, 40)) out += (c >= 0x20 && c < 0x7f) ? c : '?';
-  return out + (text.size() > 40 ? "...\"" : "\"");
-}
-
-// A whole field as a number of type T, rounded once from its decimal text. A value beyond T's range
-// rounds as IEEE says, to +-inf or (gradually) to zero: from_chars reports those as out of range
-// without a value, so they are re-read with strtof / strtod, which round them correctly (the
-// tools never change the C locale, so the decimal point is '.').
-template <class T>
-std::optional<T> parseNumber(std::string_view field) {
-  if (field.size() > 1 && field.front() == '+' && field[1] != '-' && field[1] != '+') field.remove_prefix(1);
-  if (field.empty()) return std::nullopt;
-  T value{};
-  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (end != field.data() + field.size()) return std::nullopt;
-  if (error == std::errc::result_out_of_range) {
-    const std::string text(field);
-    if constexpr (std::is_same_v<T, float>) return std::strtof(text.c_str(), nullptr);
-    else return std::strtod(text.c_str(), nullptr);
-  }
-  if (error != std::errc()) return std::nullopt;
-  return value;
-}
+using csv::parseNumber;
+using csv::quote;
+using csv::splitFields;
+using csv::trim;
 
 // Calls row(fields, line) for every non-blank line; a first line equal to `header` is skipped,
 // and a first line that starts with a non-number is reported as a wrong header.
@@ -191,6 +155,16 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot replace: " + std::strerror(renameError));
   }
+}
+
+void checkWritable(const std::string& path) {
+  std::error_code code;
+  if (std::filesystem::is_directory(path, code)) throw std::runtime_error(path + ": is a directory, not a file");
+  std::string temporary = path + ".tmp-XXXXXX";
+  const int descriptor = mkstemp(temporary.data());
+  if (descriptor < 0) throw std::runtime_error(path + ": cannot create a file there: " + std::strerror(errno));
+  close(descriptor);
+  std::remove(temporary.c_str());
 }
 
 void writeHitsCsv(const std::string& path, const std::vector<std::optional<Hit>>& hits) {

@@ -47,6 +47,10 @@ std::string readTextFile(const std::string& path);
 // std::runtime_error names the file and the cause.
 void writeFileAtomically(const std::string& path, const std::function<void(std::FILE*)>& write);
 
+// Whether writeFileAtomically could create `path`: throws std::runtime_error naming it when it is
+// a directory or its folder takes no new file. Lets a tool fail before doing its work.
+void checkWritable(const std::string& path);
+
 // Hits CSV: header `hit,t,nx,ny,nz,u,v`, one line per ray in order: `1,t,nx,ny,nz,u,v` (%.9g)
 // or `0,inf,0,0,0,0,0` for a miss.
 void writeHitsCsv(const std::string& path, const std::vector<std::optional<Hit>>& hits);

@@ -1,19 +1,15 @@
 // Random numbers for a pixel sample, from a counter-based hash of (seed, pixel, sample, dimension):
 // the same numbers whatever thread renders the pixel and in whatever order, so an image depends on
-// its seed only. The hash is SplitMix64's finaliser (Steele, Lea & Flood 2014), a bijection of
-// 64-bit words with full avalanche, applied to each counter in turn.
+// its seed only. The hash is common/counter_hash.h's.
 #pragma once
+
+#include "common/counter_hash.h"
 
 #include <cstdint>
 
 namespace revolve::render {
 
-constexpr std::uint64_t mix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
+using app::mix64;
 
 class RandomStream {
  public:

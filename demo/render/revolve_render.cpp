@@ -6,6 +6,7 @@
 #include "io/text_files.h"
 #include "progress.h"
 #include "renderer.h"
+#include "robot/picking.h"
 #include "scene/embree_scene.h"
 
 #include <CLI/CLI.hpp>
@@ -14,14 +15,17 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace {
 
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -68,7 +72,53 @@ void writeStats(const Options& options, const render::RenderSettings& settings, 
   io::writeFileAtomically(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
 }
 
+// --pick X,Y: two whole numbers, a pixel of the width x height image.
+std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
+  const std::size_t comma = text.find(',');
+  int xy[2];
+  const std::string parts[2] = {text.substr(0, comma), comma == std::string::npos ? "" : text.substr(comma + 1)};
+  for (int i = 0; i < 2; ++i) {
+    std::size_t used = 0;
+    bool ok = comma != std::string::npos && !parts[i].empty() && parts[i].find_first_not_of("0123456789-+") == std::string::npos;
+    try {
+      if (ok) xy[i] = std::stoi(parts[i], &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    if (!ok || used != parts[i].size()) {
+      throw std::runtime_error("--pick \"" + text.substr(0, 40) + "\": expected X,Y, two whole numbers (a pixel from the top left)");
+    }
+  }
+  if (xy[0] < 0 || xy[0] >= width) {
+    throw std::runtime_error("--pick: X = " + std::to_string(xy[0]) + " is outside the image: 0 <= X < width = " + std::to_string(width));
+  }
+  if (xy[1] < 0 || xy[1] >= height) {
+    throw std::runtime_error("--pick: Y = " + std::to_string(xy[1]) + " is outside the image: 0 <= Y < height = " + std::to_string(height));
+  }
+  return {xy[0], xy[1]};
+}
+
+// Prints the object under the pixel (seed 001's scene editor): index, name, hit point, distance.
+void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
+  const auto [x, y] = parsePixel(options.pick, width, height);
+  const scene::EmbreeScene built(description, buildSettings(options));
+  const std::optional<robot::Pick> picked = robot::pick(description, built, width, height, x, y);
+  if (!picked) {
+    std::printf("nothing\n");
+    return;
+  }
+  std::printf("object %u \"%s\" point %.9g %.9g %.9g distance %.9g\n", picked->object, picked->name.c_str(), picked->point.x,
+              picked->point.y, picked->point.z, picked->distance);
+}
+
 void run(const Options& options) {
+  if (!options.pick.empty()) {
+    const io::SceneDescription description = io::readScene(options.scene);
+    const int width = options.width > 0 ? options.width : description.camera.width.value_or(640);
+    const int height = options.height > 0 ? options.height : description.camera.height.value_or(480);
+    pickObject(options, description, width, height);
+    return;
+  }
   const std::string output =
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
   render::imageFormatFor(output);  // an unknown extension fails before any work
@@ -126,6 +176,9 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")->capture_default_str();
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
+  app.add_option("--pick", options.pick,
+                 "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
+                 "its index, name, hit point and distance, or \"nothing\"");
   CLI11_PARSE(app, argc, argv);
   try {
     run(options);

@@ -253,6 +253,16 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
   return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
 }
 
+std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit = embreeRay(ray);
+  rtcIntersect1(top_.get(), &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+  return RangeHit{rayHit.ray.tfar, instance ? rayHit.hit.instID[0] : std::uint32_t(instances_.size() + rayHit.hit.primID / 2)};
+}
+
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);

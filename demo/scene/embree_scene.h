@@ -43,6 +43,13 @@ struct WorldHit {
   Vec3 pointError{};
 };
 
+// The nearest hit's distance and object only: what a range-finder needs, without the normals and
+// surface parameters WorldHit carries.
+struct RangeHit {
+  float t = 0;
+  std::uint32_t object = 0;  // index into objects, or objects.size() + quad index
+};
+
 class EmbreeScene {
  public:
   EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings);
@@ -52,6 +59,8 @@ class EmbreeScene {
 
   // Nearest hit with tnear <= t <= tfar, or nothing. Thread-safe; never allocates, throws or locks.
   std::optional<WorldHit> intersect(const Ray& ray) const noexcept;
+  // The same nearest hit, reduced to its t and object. Thread-safe; never allocates, throws or locks.
+  std::optional<RangeHit> nearest(const Ray& ray) const noexcept;
   // Whether anything lies on the ray within [tnear, tfar].
   bool occluded(const Ray& ray) const noexcept;
   // Origin for a ray leaving `hit` in `direction`: revolve::offsetRayOrigin for exact surfaces

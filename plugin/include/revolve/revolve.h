@@ -325,4 +325,61 @@ class ShadingNormals {
   std::vector<double> segmentStart_, segmentLength_;  // in units of the total arc length
 };
 
+// ---------------------------------------------------------------------------------------------
+// Clearance: distances in the meridian plane.
+//
+// A point at distance rho from the axis and height z lies as far from the surface as (rho, z) lies
+// from the profile polyline in the (r, z) half-plane (law of cosines: the nearest surface point is
+// in the point's own meridian plane). So the distance to a point, and the clearance of a vertical
+// cylinder beside an upright shape, are 2-D problems, solved here exactly (up to double rounding)
+// with the MIBIT tree's meridian boxes pruning far segments.
+
+struct MeridianPoint {
+  Point2 point;      // the closest point of the profile polyline
+  double distance;   // from the query point
+  std::uint32_t segment;
+};
+// The closest point of the profile polyline to `query` = (rho, z), rho >= 0, in double precision:
+// the distance from any point at distance rho from the axis and height z to the surface. A
+// non-finite query or rho < 0 gives a NaN distance.
+MeridianPoint closestMeridianPoint(const Shape& shape, Point2 query) noexcept;
+
+// A solid vertical cylinder with flat ends (a robot's body), upright beside an upright shape: its
+// axis parallel to the shape's axis at distance `axisDistance`, radius `radius`, and heights
+// [zMin, zMax] in the shape's z (after MeridianScale). radius = 0 with zMin = zMax is a point.
+struct UprightCylinder {
+  double axisDistance;  // >= 0
+  double radius;        // >= 0
+  double zMin, zMax;    // zMin <= zMax
+};
+
+// The shape as placed: its meridian mapped (r, z) -> (radial r, axial z) before distances are
+// taken. An object scaled by (s, s, sz) and turned only about its axis has radial = s, axial = sz;
+// turned upside down (180 degrees about a horizontal axis), axial = -sz.
+struct MeridianScale {
+  double radial = 1;  // > 0
+  double axial = 1;   // non-zero
+};
+
+struct CylinderClearance {
+  // The signed distance from the cylinder to the surface: min over surface points q of the
+  // cylinder's signed distance function at q. Positive: the gap between the cylinder and the
+  // surface (Euclidean, exact). Zero or negative: the surface touches or enters the cylinder, and
+  // -clearance is the deepest a surface point lies inside it, measured to the cylinder's nearest
+  // boundary (its side or an end). Only the surface counts: a cylinder wholly inside a closed shape
+  // without touching it has a positive clearance, the distance to the shape's inner wall.
+  double clearance;
+  // The profile point (scaled meridian) realising it; in 3-D it lies in the half-plane from the
+  // shape's axis towards the cylinder's axis (any half-plane when the axes coincide).
+  Point2 point;
+  std::uint32_t segment;
+};
+// Exact: in the meridian plane, the cylinder is the rectangle [d - radius, d + radius] x [zMin,
+// zMax] (d = axisDistance; a surface point at radius r is nearest the cylinder's axis, at
+// horizontal distance |r - d|, in that half-plane), and the clearance is the least signed distance
+// from that rectangle to the scaled profile polyline. Segments are solved in closed form (a
+// vertex-to-edge distance when apart, the deepest point of the clipped segment when inside).
+// Preconditions as stated in the structs; a non-finite value or a violated one gives NaN.
+CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder, MeridianScale scale = {}) noexcept;
+
 }  // namespace revolve

@@ -1,0 +1,109 @@
+// revolve-clearance: the clearance of a vertical-cylinder robot (seed 001's collision test) at each
+// pose of POSES.csv among a scene file's obstacles: exact for upright surfaces of revolution, a
+// lower bound where said (README.md, "Robot range-finding").
+#include "io/clearance_file.h"
+#include "io/csv_fields.h"
+#include "io/poses_file.h"
+#include "io/scene_file.h"
+#include "io/text_files.h"
+#include "robot/clearance_map.h"
+#include "robot/picking.h"
+#include "robot/robot_argument.h"
+
+#include <CLI/CLI.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+using namespace revolve;
+
+struct Options {
+  std::string scene, robot, poses, output, ground;
+  int threads = 0;
+};
+
+void run(const Options& options) {
+  std::string extension = std::filesystem::path(options.output).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension != ".csv") {
+    throw std::runtime_error(options.output + ": unsupported extension \"" + extension + "\"; the clearance table is a .csv");
+  }
+  const robot::RobotDimensions shape = robot::parseRobotArgument(options.robot);
+  double ground = -INFINITY;  // default: every surface is an obstacle
+  if (!options.ground.empty()) {
+    const std::optional<double> value = io::csv::parseNumber<double>(options.ground);
+    if (!value || !std::isfinite(*value)) throw std::runtime_error("--ground " + io::csv::quote(options.ground) + " is not a finite number");
+    ground = *value;
+  }
+  const io::SceneDescription description = io::readScene(options.scene);
+  for (const io::SceneProfile& profile : description.profiles) {
+    for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-clearance: warning: %s\n", warning.c_str());
+  }
+  const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
+  io::checkWritable(options.output);
+
+  const robot::ClearanceMap map(description, ground);
+  std::vector<robot::SceneClearance> results(poses.size());
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t i) {
+      const io::RobotPose& p = poses[i];
+      results[i] = map.query({p.x, p.y, p.z + shape.zMin, p.z + shape.zMax, shape.radius});
+    });
+  });
+
+  std::vector<io::ClearanceRow> rows;
+  std::size_t collisions = 0, bounds = 0, least = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const robot::SceneClearance& r = results[i];
+    rows.push_back({r.clearance, r.collides, r.object, r.point[0], r.point[1], r.point[2]});
+    collisions += r.collides ? 1 : 0;
+    bounds += r.object >= 0 && !r.exact ? 1 : 0;
+    if (r.clearance < results[least].clearance) least = i;
+  }
+  io::writeClearanceCsv(options.output, rows);
+  const robot::SceneClearance& worst = results[least];
+  std::printf("revolve-clearance: %zu poses, %zu collide; least clearance %.6g at pose %zu", poses.size(), collisions,
+              worst.clearance, least);
+  if (worst.object >= 0) {
+    const std::string name = robot::objectName(description, std::size_t(worst.object));
+    std::printf(" (object %lld%s%s%s)", static_cast<long long>(worst.object), name.empty() ? "" : " \"", name.c_str(),
+                name.empty() ? "" : "\"");
+  }
+  std::printf("; %zu poses' clearance is a lower bound (tilted objects or sloping quads nearest)\n", bounds);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"The clearance of a vertical-cylinder robot to the obstacles of a scene of surfaces of revolution and quads, "
+               "at each pose: signed distance, collision flag, nearest obstacle and its point."};
+  app.add_option("scene", options.scene, "scene file (JSON, revolve-render's format)")->required();
+  app.add_option("--robot", options.robot, "RADIUS,ZMIN,ZMAX: the robot's radius and the heights of its ends above each pose's z")
+      ->required();
+  app.add_option("--poses", options.poses, "robot poses (CSV, header x,y,z,yaw or x,y,yaw)")->required();
+  app.add_option("-o,--output", options.output, "clearance table to write (.csv)")->required();
+  app.add_option("--ground", options.ground,
+                 "height of the ground the robot drives on: surfaces wholly at or below it are not obstacles (default: none)");
+  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
+  // Argument errors too are one line, like every other error of the tool.
+  app.failure_message([](const CLI::App*, const CLI::Error& error) { return std::string("revolve-clearance: ") + error.what() + " (see --help)\n"; });
+  CLI11_PARSE(app, argc, argv);
+  try {
+    run(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "revolve-clearance: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,143 @@
+#include "io/sensor_file.h"
+
+#include "io/json_reader.h"
+#include "io/text_files.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace revolve::io {
+namespace {
+
+using json::child;
+using json::element;
+using json::Json;
+using json::numberText;
+using Reader = json::Reader<SensorError>;
+
+// Angles are radians: a value beyond a full turn either way is most likely degrees.
+constexpr double kTurn = 2 * std::numbers::pi;
+constexpr double kRightAngle = std::numbers::pi / 2;
+
+double angle(const Reader& in, const Json& value, const std::string& path) {
+  return in.numberIn(value, path, -kTurn, kTurn, "angles are in radians, within [-2 pi, 2 pi] (degrees?)");
+}
+
+double elevation(const Reader& in, const Json& value, const std::string& path) {
+  return in.numberIn(value, path, -kRightAngle, kRightAngle, "an elevation lies in [-pi/2, pi/2] radians");
+}
+
+SensorPose readPose(const Reader& in, const Json& json) {
+  const std::string path = "pose";
+  in.object(json, path, {"position", "yaw", "pitch", "roll"});
+  SensorPose pose;
+  pose.position = in.vec3(in.required(json, path, "position"), "pose.position");
+  if (const Json* v = in.optional(json, "yaw")) pose.yaw = angle(in, *v, "pose.yaw");
+  if (const Json* v = in.optional(json, "pitch")) pose.pitch = angle(in, *v, "pose.pitch");
+  if (const Json* v = in.optional(json, "roll")) pose.roll = angle(in, *v, "pose.roll");
+  return pose;
+}
+
+// A fan of beams; `limit` reads one angle (azimuths may span a turn, elevations half of one).
+template <class ReadAngle>
+BeamFan readFan(const Reader& in, const Json& json, const std::string& path, int maxSamples, ReadAngle limit) {
+  in.object(json, path, {"samples", "min_angle", "max_angle"});
+  BeamFan fan;
+  fan.samples = in.integerIn(in.required(json, path, "samples"), child(path, "samples"), 1, maxSamples);
+  fan.minAngle = limit(in.required(json, path, "min_angle"), child(path, "min_angle"));
+  fan.maxAngle = limit(in.required(json, path, "max_angle"), child(path, "max_angle"));
+  if (!(fan.minAngle <= fan.maxAngle)) {
+    in.fail(child(path, "max_angle"), numberText(fan.maxAngle) + " is below min_angle = " + numberText(fan.minAngle) +
+                                          ": beams run from min_angle up to max_angle");
+  }
+  if (fan.maxAngle - fan.minAngle > kTurn) {
+    in.fail(child(path, "max_angle"), "the fan spans " + numberText(fan.maxAngle - fan.minAngle) +
+                                          " radians, more than a full turn (2 pi)");
+  }
+  if (fan.samples == 1 && fan.minAngle != fan.maxAngle) {
+    in.fail(child(path, "max_angle"), numberText(fan.maxAngle) + " differs from min_angle = " + numberText(fan.minAngle) +
+                                          ": with 1 sample the one beam is at min_angle = max_angle");
+  }
+  return fan;
+}
+
+}  // namespace
+
+std::vector<double> fanAngles(const BeamFan& fan) {
+  std::vector<double> angles(std::size_t(fan.samples));
+  for (int i = 0; i < fan.samples; ++i) {
+    angles[i] = fan.samples == 1 ? fan.minAngle : fan.minAngle + i * (fan.maxAngle - fan.minAngle) / (fan.samples - 1);
+  }
+  angles.back() = fan.maxAngle;  // exactly, whatever the rounding of the step
+  return angles;
+}
+
+SensorDescription parseSensor(std::string_view text, const std::string& file) {
+  const Reader in(file);
+  const Json root = json::parse(text, in);
+  in.object(root, "", {"pose", "horizontal", "vertical", "elevations", "range", "noise"});
+  SensorDescription sensor;
+  sensor.file = file;
+  sensor.pose = readPose(in, in.required(root, "", "pose"));
+  const auto azimuth = [&](const Json& value, const std::string& path) { return angle(in, value, path); };
+  const auto upward = [&](const Json& value, const std::string& path) { return elevation(in, value, path); };
+  sensor.horizontal = readFan(in, in.required(root, "", "horizontal"), "horizontal", kMaxHorizontalSamples, azimuth);
+
+  const Json* vertical = in.optional(root, "vertical");
+  const Json* elevations = in.optional(root, "elevations");
+  if (vertical != nullptr && elevations != nullptr) {
+    in.fail("elevations", "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both");
+  }
+  if (vertical != nullptr) {
+    sensor.elevations = fanAngles(readFan(in, *vertical, "vertical", kMaxChannels, upward));
+    sensor.planar = false;
+  } else if (elevations != nullptr) {
+    in.array(*elevations, "elevations");
+    if (elevations->empty()) in.fail("elevations", "the list is empty; a sensor needs at least one channel");
+    if (elevations->size() > std::size_t(kMaxChannels)) {
+      in.fail("elevations", std::to_string(elevations->size()) + " channels; at most " + std::to_string(kMaxChannels));
+    }
+    for (std::size_t i = 0; i < elevations->size(); ++i) sensor.elevations.push_back(upward((*elevations)[i], element("elevations", i)));
+    sensor.planar = false;
+  } else {
+    sensor.elevations = {0.0};
+  }
+  const long beams = long(sensor.horizontal.samples) * long(sensor.elevations.size());
+  if (beams > kMaxBeamsPerPose) {
+    in.fail("horizontal.samples", std::to_string(sensor.horizontal.samples) + " samples x " + std::to_string(sensor.elevations.size()) +
+                                      " channels = " + std::to_string(beams) + " beams a pose; at most " + std::to_string(kMaxBeamsPerPose));
+  }
+
+  const Json& range = in.object(in.required(root, "", "range"), "range", {"min", "max", "resolution"});
+  sensor.rangeMin = in.number(in.required(range, "range", "min"), "range.min");
+  if (!(sensor.rangeMin >= 0)) in.fail("range.min", numberText(sensor.rangeMin) + " is negative; a range is >= 0");
+  sensor.rangeMax = in.number(in.required(range, "range", "max"), "range.max");
+  if (!(sensor.rangeMax > sensor.rangeMin)) {
+    in.fail("range.max", numberText(sensor.rangeMax) + " is not above range.min = " + numberText(sensor.rangeMin));
+  }
+  if (const Json* resolution = in.optional(range, "resolution")) {
+    sensor.resolution = in.number(*resolution, "range.resolution");
+    if (!(sensor.resolution >= 0)) in.fail("range.resolution", numberText(sensor.resolution) + " is negative; 0 means none");
+  }
+
+  if (const Json* noise = in.optional(root, "noise")) {
+    in.object(*noise, "noise", {"mean", "stddev", "seed"});
+    sensor.noiseStddev = in.number(in.required(*noise, "noise", "stddev"), "noise.stddev");
+    if (!(sensor.noiseStddev >= 0)) in.fail("noise.stddev", numberText(sensor.noiseStddev) + " is negative");
+    if (const Json* mean = in.optional(*noise, "mean")) sensor.noiseMean = in.number(*mean, "noise.mean");
+    if (const Json* seed = in.optional(*noise, "seed")) sensor.noiseSeed = in.unsignedInteger(*seed, "noise.seed");
+  }
+  return sensor;
+}
+
+SensorDescription readSensor(const std::string& path) {
+  std::string text;
+  try {
+    text = readTextFile(path);
+  } catch (const InputError& error) {
+    throw SensorError(error.what());
+  }
+  return parseSensor(text, path);
+}
+
+}  // namespace revolve::io

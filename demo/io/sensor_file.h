@@ -1,0 +1,70 @@
+// The sensor file (SENSOR.json): a laser range-finder as Gazebo's <lidar> sensor and ROS's
+// LaserScan describe it, an interface other tools write, so its key names are kept as they are
+// (README.md, "Robot range-finding"). Angles are in radians.
+//
+//   {"pose": {"position": [x, y, z], "yaw": a, "pitch": b, "roll": c},
+//    "horizontal": {"samples": N, "min_angle": a0, "max_angle": a1},
+//    "vertical": {"samples": M, "min_angle": e0, "max_angle": e1}   or   "elevations": [e, ...],
+//    "range": {"min": r0, "max": r1, "resolution": q},
+//    "noise": {"mean": m, "stddev": s, "seed": k}}
+//
+// The reader is strict: a missing or unknown key, a wrong type or a value breaking a rule is a
+// SensorError naming the file, the key path (`horizontal.samples`), the value and the rule.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace revolve::io {
+
+class SensorError : public std::runtime_error {
+ public:
+  explicit SensorError(const std::string& message) : std::runtime_error(message) {}
+};
+
+// The sensor's mounting on the robot: position, then ROS's fixed-axis roll (about X), pitch (about
+// Y), yaw (about Z): R = Rz(yaw) Ry(pitch) Rx(roll).
+struct SensorPose {
+  std::array<double, 3> position{};
+  double yaw = 0, pitch = 0, roll = 0;
+};
+
+// `samples` beams evenly spanning [minAngle, maxAngle], both ends included (Gazebo, ROS):
+// beam i at minAngle + i (maxAngle - minAngle) / (samples - 1).
+struct BeamFan {
+  int samples = 1;
+  double minAngle = 0, maxAngle = 0;
+};
+
+struct SensorDescription {
+  std::string file;  // as given to the reader
+  SensorPose pose;
+  BeamFan horizontal;  // azimuths, counter-clockwise about the sensor's +Z from its +X
+  // One elevation per channel (ring), in ring order, up from the sensor's XY plane: from
+  // `vertical` (ring 0 = min_angle), from `elevations` as listed, or {0} for a 2-D scanner.
+  std::vector<double> elevations;
+  bool planar = true;  // neither `vertical` nor `elevations` given: a 2-D scanner in its XY plane
+  double rangeMin = 0, rangeMax = 0;
+  double resolution = 0;  // ranges rounded to a multiple of it; 0 = not rounded
+  double noiseMean = 0, noiseStddev = 0;  // Gaussian, added to returns only; stddev 0 = none
+  std::uint64_t noiseSeed = 0;
+};
+
+// Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).
+inline constexpr int kMaxHorizontalSamples = 1 << 20;
+inline constexpr int kMaxChannels = 4096;
+inline constexpr long kMaxBeamsPerPose = 1L << 24;
+
+// The angles of a fan's beams (see BeamFan).
+std::vector<double> fanAngles(const BeamFan& fan);
+
+// Parses sensor JSON `text`; `file` names it in messages. Throws SensorError.
+SensorDescription parseSensor(std::string_view text, const std::string& file);
+// Reads and parses the file at `path`. Throws SensorError.
+SensorDescription readSensor(const std::string& path);
+
+}  // namespace revolve::io

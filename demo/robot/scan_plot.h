@@ -1,0 +1,32 @@
+// revolve-lidar's --plot: a top-down PNG of a scan over the scene's footprint. Floors and other
+// non-vertical quads are filled (higher ones on top), walls drawn as thick lines, each object of
+// revolution as its outline seen from above with, for upright ones, its section at the first
+// pose's sensor height (what a 2-D scanner at that height sees); then every return's beam, the
+// returns, and each pose's sensor with its heading; axes in the scene's units (metres).
+#pragma once
+
+#include "io/poses_file.h"
+#include "io/scan_files.h"
+#include "io/scene_file.h"
+#include "io/sensor_file.h"
+
+#include <span>
+#include <string>
+
+namespace revolve::robot {
+
+struct ScanPlotInput {
+  const io::SceneDescription& scene;
+  const io::SensorDescription& sensor;
+  std::span<const io::RobotPose> poses;
+  const io::ScanTable& scan;
+};
+
+// Throws std::runtime_error naming the file unless it ends in .png (any case) and its folder
+// takes a new file. Call before scanning so that a typo costs nothing.
+void checkPlotPath(const std::string& path);
+
+// Draws and writes the plot (through a temporary file renamed into place).
+void writeScanPlot(const std::string& path, const ScanPlotInput& input);
+
+}  // namespace revolve::robot

@@ -1,0 +1,48 @@
+// Fuzz target: a sensor file (SENSOR.json) as revolve-lidar reads it. Expected: a SensorError with
+// a one-line message, or a description that keeps the reader's promises (sample and channel counts
+// within their limits, angles finite and within their ranges, min <= max and a fan spanning at
+// most a turn, range 0 <= min < max, resolution and stddev >= 0), whose beam angles (fanAngles)
+// run from min_angle to max_angle without going back. Anything else, or a sanitizer report, is a
+// finding.
+#include "fuzz_checks.h"
+#include "io/sensor_file.h"
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+#include <string_view>
+
+using namespace revolve;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  io::SensorDescription sensor;
+  try {
+    sensor = io::parseSensor(text, "fuzz.json");
+  } catch (const io::SensorError& error) {
+    fuzz::checkOneLineMessage(error.what());
+    return 0;
+  }
+  const double turn = 2 * std::numbers::pi;
+  for (const double a : {sensor.pose.yaw, sensor.pose.pitch, sensor.pose.roll}) FUZZ_CHECK(std::abs(a) <= turn);
+  for (const double p : sensor.pose.position) FUZZ_CHECK(std::isfinite(p));
+  const io::BeamFan& fan = sensor.horizontal;
+  FUZZ_CHECK(fan.samples >= 1 && fan.samples <= io::kMaxHorizontalSamples);
+  FUZZ_CHECK(fan.minAngle <= fan.maxAngle && fan.maxAngle - fan.minAngle <= turn);
+  FUZZ_CHECK(std::abs(fan.minAngle) <= turn && std::abs(fan.maxAngle) <= turn);
+  FUZZ_CHECK(!sensor.elevations.empty() && sensor.elevations.size() <= std::size_t(io::kMaxChannels));
+  FUZZ_CHECK(long(fan.samples) * long(sensor.elevations.size()) <= io::kMaxBeamsPerPose);
+  if (sensor.planar) FUZZ_CHECK(sensor.elevations.size() == 1 && sensor.elevations[0] == 0);
+  for (const double e : sensor.elevations) FUZZ_CHECK(std::abs(e) <= std::numbers::pi / 2);
+  FUZZ_CHECK(sensor.rangeMin >= 0 && sensor.rangeMin < sensor.rangeMax && std::isfinite(sensor.rangeMax));
+  FUZZ_CHECK(sensor.resolution >= 0 && std::isfinite(sensor.resolution));
+  FUZZ_CHECK(sensor.noiseStddev >= 0 && std::isfinite(sensor.noiseStddev) && std::isfinite(sensor.noiseMean));
+  if (fan.samples <= 4096) {  // the angles themselves, where that stays quick
+    const std::vector<double> angles = io::fanAngles(fan);
+    FUZZ_CHECK(angles.size() == std::size_t(fan.samples));
+    FUZZ_CHECK(angles.front() == fan.minAngle && angles.back() == fan.maxAngle);
+    for (std::size_t i = 1; i < angles.size(); ++i) FUZZ_CHECK(angles[i] >= angles[i - 1]);
+  }
+  return 0;
+}

@@ -1,0 +1,167 @@
+// The sensor file reader: every key and default as README documents them, the beams' angles as
+// Gazebo and ROS define them (both ends included), and each rule's error naming the key path.
+#include "io/sensor_file.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace revolve::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kPlanar = R"({
+  "pose": {"position": [0.1, -0.2, 0.3], "yaw": 0.5, "pitch": -0.25, "roll": 0.125},
+  "horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},
+  "range": {"min": 0.1, "max": 30, "resolution": 0.01},
+  "noise": {"mean": 0.002, "stddev": 0.01, "seed": 18446744073709551615}
+})";
+
+TEST(SensorFileTest, ReadsEveryKey) {
+  const SensorDescription s = parseSensor(kPlanar, "s.json");
+  EXPECT_EQ(s.pose.position, (std::array<double, 3>{0.1, -0.2, 0.3}));
+  EXPECT_EQ(s.pose.yaw, 0.5);
+  EXPECT_EQ(s.pose.pitch, -0.25);
+  EXPECT_EQ(s.pose.roll, 0.125);
+  EXPECT_EQ(s.horizontal.samples, 5);
+  EXPECT_TRUE(s.planar);
+  EXPECT_EQ(s.elevations, std::vector<double>{0.0});  // a 2-D scanner: one channel in its plane
+  EXPECT_EQ(s.rangeMin, 0.1);
+  EXPECT_EQ(s.rangeMax, 30);
+  EXPECT_EQ(s.resolution, 0.01);
+  EXPECT_EQ(s.noiseMean, 0.002);
+  EXPECT_EQ(s.noiseStddev, 0.01);
+  EXPECT_EQ(s.noiseSeed, 18446744073709551615ull);  // the full 64-bit range, not through a double
+}
+
+TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
+  const SensorDescription s =
+      parseSensor(R"({"pose": {"position": [0, 0, 1]}, "horizontal": {"samples": 1, "min_angle": 0, "max_angle": 0},
+                      "range": {"min": 0, "max": 5}})", "s.json");
+  EXPECT_EQ(s.pose.yaw, 0);
+  EXPECT_EQ(s.pose.pitch, 0);
+  EXPECT_EQ(s.pose.roll, 0);
+  EXPECT_EQ(s.resolution, 0);
+  EXPECT_EQ(s.noiseMean, 0);
+  EXPECT_EQ(s.noiseStddev, 0);
+}
+
+TEST(SensorFileTest, VerticalFanAndElevationList) {
+  const SensorDescription fan = parseSensor(
+      R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
+          "vertical": {"samples": 3, "min_angle": -0.2, "max_angle": 0.2}, "range": {"min": 0, "max": 5}})", "s.json");
+  EXPECT_FALSE(fan.planar);
+  ASSERT_EQ(fan.elevations.size(), 3u);
+  EXPECT_DOUBLE_EQ(fan.elevations[0], -0.2);  // ring 0 is min_angle, the lowest
+  EXPECT_DOUBLE_EQ(fan.elevations[1], 0.0);
+  EXPECT_DOUBLE_EQ(fan.elevations[2], 0.2);
+  const SensorDescription list = parseSensor(
+      R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
+          "elevations": [0.1, -0.3, 0.05], "range": {"min": 0, "max": 5}})", "s.json");
+  EXPECT_EQ(list.elevations, (std::vector<double>{0.1, -0.3, 0.05}));  // rings in the order listed
+}
+
+TEST(SensorFileTest, FanAnglesIncludeBothEnds) {
+  // ROS LaserScan / Gazebo: angle_increment = (max - min) / (samples - 1).
+  const std::vector<double> a = fanAngles({5, -1.0, 1.0});
+  ASSERT_EQ(a.size(), 5u);
+  for (int i = 0; i < 5; ++i) EXPECT_DOUBLE_EQ(a[i], -1.0 + 0.5 * i);
+  EXPECT_EQ(a.back(), 1.0);
+  const std::vector<double> full = fanAngles({1081, -0.75 * std::numbers::pi, 0.75 * std::numbers::pi});
+  EXPECT_DOUBLE_EQ(full[540], 0.0);  // the middle beam of an odd fan looks straight ahead
+  EXPECT_EQ(fanAngles({1, 0.25, 0.25}), std::vector<double>{0.25});
+}
+
+struct BadSensor {
+  const char* name;
+  std::string text;
+  std::string expected;  // a substring of the message
+};
+
+std::string with(const std::string& from, const std::string& to) {
+  std::string text = kPlanar;
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// Every rule, one case each (in one test: a process per case costs seconds under the sanitizers).
+TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
+  const std::vector<BadSensor> cases{
+        BadSensor{"NotJson", "{", "s.json: not valid JSON"},
+        BadSensor{"MissingHorizontal", with(R"("horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},)", ""),
+                  R"(missing key "horizontal")"},
+        BadSensor{"MissingPose", with(R"("pose": {"position": [0.1, -0.2, 0.3], "yaw": 0.5, "pitch": -0.25, "roll": 0.125},)", ""),
+                  R"(missing key "pose")"},
+        BadSensor{"MissingPosition", with(R"("position": [0.1, -0.2, 0.3], )", ""), R"(pose: missing key "position")"},
+        BadSensor{"UnknownTopKey", with(R"("range")", R"("rnage")"), "rnage: unknown key; expected one of: pose, horizontal"},
+        BadSensor{"UnknownNestedKey", with(R"("seed")", R"("sead")"), "noise.sead: unknown key; expected one of: mean, stddev, seed"},
+        BadSensor{"RepeatedKey", with(R"("yaw": 0.5)", R"("yaw": 0.5, "yaw": 0.6)"), R"(key "yaw" appears twice)"},
+        BadSensor{"SamplesNotANumber", with(R"("samples": 5)", R"("samples": "many")"), "horizontal.samples: expected a number, found string"},
+        BadSensor{"SamplesZero", with(R"("samples": 5)", R"("samples": 0)"), "horizontal.samples: 0 is out of range: must lie in [1, 1048576]"},
+        BadSensor{"SamplesFractional", with(R"("samples": 5)", R"("samples": 5.5)"), "horizontal.samples: 5.5 is not a whole number"},
+        BadSensor{"AngleInDegrees", with(R"("min_angle": -1.0)", R"("min_angle": -135)"),
+                  "horizontal.min_angle: -135 is out of range: angles are in radians, within [-2 pi, 2 pi] (degrees?)"},
+        BadSensor{"MaxBelowMin", with(R"("max_angle": 1.0)", R"("max_angle": -2.0)"), "horizontal.max_angle: -2 is below min_angle = -1"},
+        BadSensor{"MoreThanATurn", with(R"("min_angle": -1.0, "max_angle": 1.0)", R"("min_angle": -4, "max_angle": 4)"),
+                  "horizontal.max_angle: the fan spans 8 radians, more than a full turn"},
+        BadSensor{"OneSampleTwoAngles", with(R"("samples": 5)", R"("samples": 1)"), "horizontal.max_angle: 1 differs from min_angle = -1"},
+        BadSensor{"ElevationBeyondVertical", with(R"("range")", R"("elevations": [0.1, 2.0], "range")"),
+                  "elevations[1]: 2 is out of range: an elevation lies in [-pi/2, pi/2]"},
+        BadSensor{"ElevationsEmpty", with(R"("range")", R"("elevations": [], "range")"), "elevations: the list is empty"},
+        BadSensor{"VerticalAndElevations",
+                  with(R"("range")", R"("elevations": [0.1], "vertical": {"samples": 2, "min_angle": 0, "max_angle": 0.1}, "range")"),
+                  "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both"},
+        BadSensor{"VerticalMissingSamples", with(R"("range")", R"("vertical": {"min_angle": 0, "max_angle": 0.1}, "range")"),
+                  R"(vertical: missing key "samples")"},
+        BadSensor{"NegativeMin", with(R"("min": 0.1)", R"("min": -1)"), "range.min: -1 is negative"},
+        BadSensor{"MaxNotAboveMin", with(R"("max": 30)", R"("max": 0.1)"), "range.max: 0.1 is not above range.min = 0.1"},
+        BadSensor{"MaxInfinite", with(R"("max": 30)", R"("max": 1e999)"), "not valid JSON: number overflow parsing '1e999'"},
+        BadSensor{"NegativeResolution", with(R"("resolution": 0.01)", R"("resolution": -0.01)"), "range.resolution: -0.01 is negative"},
+        BadSensor{"NegativeStddev", with(R"("stddev": 0.01)", R"("stddev": -1)"), "noise.stddev: -1 is negative"},
+        BadSensor{"MissingStddev", with(R"("stddev": 0.01, )", ""), R"(noise: missing key "stddev")"},
+        BadSensor{"NegativeSeed", with(R"("seed": 18446744073709551615)", R"("seed": -3)"), "noise.seed: -3 is negative"},
+        BadSensor{"FractionalSeed", with(R"("seed": 18446744073709551615)", R"("seed": 1.5)"), "noise.seed: 1.5 is not a whole number"},
+        BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"), "pose.position: expected an array of 3 numbers"}};
+  for (const BadSensor& bad : cases) {
+    SCOPED_TRACE(bad.name);
+    try {
+      parseSensor(bad.text, "s.json");
+      ADD_FAILURE() << "accepted";
+    } catch (const SensorError& error) {
+      EXPECT_THAT(error.what(), HasSubstr(bad.expected));
+      EXPECT_THAT(error.what(), ::testing::StartsWith("s.json: "));
+      EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
+    }
+  }
+}
+
+TEST(SensorFileTest, TooManyBeamsAPose) {
+  const std::string text = with(R"("samples": 5)", R"("samples": 1048576)");
+  const std::string withRings =
+      text.substr(0, text.find(R"("range")")) + R"("vertical": {"samples": 17, "min_angle": 0, "max_angle": 0.1}, )" +
+      text.substr(text.find(R"("range")"));
+  try {
+    parseSensor(withRings, "s.json");
+    FAIL() << "accepted";
+  } catch (const SensorError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("horizontal.samples: 1048576 samples x 17 channels = 17825792 beams a pose; at most 16777216"));
+  }
+}
+
+TEST(SensorFileTest, MissingFileNamesIt) {
+  try {
+    readSensor("/nonexistent/sensor.json");
+    FAIL() << "accepted";
+  } catch (const SensorError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("/nonexistent/sensor.json:0: cannot open"));
+  }
+}
+
+}  // namespace
+}  // namespace revolve::io
