@@ -98,7 +98,7 @@ TEST(MethodAgreementTest, MibitAndKajiyaMatchLinearScanHitForHit) {
     for (std::size_t v = 0; v < shapes.size(); ++v) EXPECT_EQ(mismatches[v], 0u) << compared[v].name;
     raysTested += rays.size();
   }
-  EXPECT_GE(raysTested, 1000000u);
+  EXPECT_GE(raysTested, testing::scaledRays(1000000));
   // The rays must exercise hits and misses alike, or agreement would mean little.
   EXPECT_GT(hits, raysTested / 4);
   EXPECT_LT(hits, raysTested * 9 / 10);
