@@ -191,7 +191,7 @@ Vec3 placeVector(const Placement& p, Vec3 v, bool point) {
 
 void checkInstances(const std::vector<Placement>& placements, bool exact) {
   DevicePtr device = newDevice();
-  const Shape shape(Profile(testing::hollowVase()));
+  const Shape shape{Profile(testing::hollowVase())};
   Geometry geometry(device.get(), shape);
   ScenePtr object(rtcNewScene(device.get()));
   rtcAttachGeometry(object.get(), geometry.handle());

@@ -21,7 +21,7 @@ bool sameBits(T a, T b) {
 
 TEST(KernelPacketTest, PacketSetUpEqualsTheSingleRaySetUpBitForBit) {
   std::mt19937_64 random(0x9ac4);
-  const Shape shape(Profile(testing::hollowVase()));
+  const Shape shape{Profile(testing::hollowVase())};
   std::vector<Ray> rays = testing::incoherentRays(shape, random, 20000);
   const std::vector<Ray> awkward = testing::axisAlignedRays(shape, random, 4000);
   rays.insert(rays.end(), awkward.begin(), awkward.end());
