@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev libopenimageio-dev
-  fonts-dejavu-core  # revolve-lidar --plot draws its labels in DejaVu Sans
+  python3-matplotlib  # revolve-lidar --plot and bench/plot_results.py
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(libgtest-dev libgmock-dev clang libclang-rt-14-dev)

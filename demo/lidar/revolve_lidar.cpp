@@ -57,9 +57,9 @@ void run(const Options& options) {
   const std::string geometry = build.mesh ? "mesh, " + std::to_string(build.slices) + " slices" : "exact";
   std::size_t returns = 0;
   for (const io::BeamReturn& beam : scan.beams) returns += std::isinf(beam.range) ? 0 : 1;
-  std::printf("revolve-lidar: %zu poses x %zu beams (%zu rings x %zu azimuths): %zu returns; traced in %.3g s (%.4g scans/s, "
+  std::printf("revolve-lidar: %zu pose%s x %zu beams (%zu rings x %zu azimuths): %zu returns; traced in %.3g s (%.4g scans/s, "
               "%d threads, %s geometry)\n",
-              poses.size(), lidar.beamsPerPose(), scan.rings(), scan.azimuths.size(), returns, seconds,
+              poses.size(), poses.size() == 1 ? "" : "s", lidar.beamsPerPose(), scan.rings(), scan.azimuths.size(), returns, seconds,
               seconds > 0 ? double(poses.size()) / seconds : 0.0,
               options.threads > 0 ? options.threads : tbb::info::default_concurrency(),
               geometry.c_str());

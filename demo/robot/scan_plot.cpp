@@ -1,17 +1,29 @@
 #include "robot/scan_plot.h"
 
-#include "robot/canvas.h"
+#include "io/text_files.h"
 #include "robot/placed_shape.h"
 #include "robot/sensor_rig.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ;
 
 namespace revolve::robot {
 namespace {
@@ -39,24 +51,17 @@ std::vector<Point> convexHull(std::vector<Point> points) {
   return hull;
 }
 
-// What the plot shows of the scene, in world x, y.
-struct Footprint {
+// What the plot shows of the scene, projected onto the ground plane, as the plotter reads it:
+// `surfaces` (non-vertical quads, lowest first, so higher ones are drawn on top), `walls`
+// (vertical quads seen edge-on, as their widest pair of corners), `objects` (each object of
+// revolution's outline from above) and `sections` (upright objects cut at the sensor's height).
+nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeight) {
   struct Surface {
     std::vector<Point> outline;
-    double top;  // drawn in order of height, highest last
+    double top;
   };
-  std::vector<Surface> surfaces;             // non-vertical quads
-  std::vector<std::array<Point, 2>> walls;   // vertical quads, seen edge-on
-  std::vector<std::vector<Point>> objects;   // objects of revolution from above
-  struct Section {
-    Point centre;
-    double radius;
-  };
-  std::vector<Section> sections;  // upright objects cut at the sensor's height
-};
-
-Footprint footprintOf(const io::SceneDescription& scene, double sensorHeight) {
-  Footprint footprint;
+  std::vector<Surface> surfaces;
+  nlohmann::json walls = nlohmann::json::array(), objects = nlohmann::json::array(), sections = nlohmann::json::array();
   for (const io::SceneQuad& quad : scene.quads) {
     // Newell's normal: a quad whose horizontal projection is under 1/1000 of its area is drawn as
     // a wall (a line) rather than as a sliver a pixel wide.
@@ -77,14 +82,14 @@ Footprint footprintOf(const io::SceneDescription& scene, double sensorHeight) {
           if (d > widest) widest = d, ends = {Point{quad.corners[i][0], quad.corners[i][1]}, Point{quad.corners[j][0], quad.corners[j][1]}};
         }
       }
-      footprint.walls.push_back(ends);
+      walls.push_back(ends);
       continue;
     }
-    Footprint::Surface surface{{}, -INFINITY};
+    Surface surface{{}, -INFINITY};
     for (const auto& c : quad.corners) surface.outline.push_back({c[0], c[1]}), surface.top = std::max(surface.top, c[2]);
-    footprint.surfaces.push_back(surface);
+    surfaces.push_back(surface);
   }
-  std::sort(footprint.surfaces.begin(), footprint.surfaces.end(), [](const auto& a, const auto& b) { return a.top < b.top; });
+  std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) { return a.top < b.top; });
 
   for (const io::SceneObject& object : scene.objects) {
     const Matrix3 linear = linearPart(object.transform);
@@ -98,7 +103,7 @@ Footprint footprintOf(const io::SceneDescription& scene, double sensorHeight) {
         samples.push_back({w[0] + t[0], w[1] + t[1]});
       }
     }
-    footprint.objects.push_back(convexHull(samples));
+    objects.push_back(convexHull(samples));
     if (const std::optional<MeridianScale> upright = uprightScale(object.transform)) {
       const double z = (sensorHeight - t[2]) / upright->axial;  // the sensor's height in the profile's z
       const std::span<const Point2> points = scene.profiles[object.profile].profile.points();
@@ -106,33 +111,82 @@ Footprint footprintOf(const io::SceneDescription& scene, double sensorHeight) {
         const Point2 a = points[i], b = points[i + 1];
         if ((a.z <= z) == (b.z <= z) || a.z == b.z) continue;
         const double r = a.r + (z - a.z) / (b.z - a.z) * (b.r - a.r);
-        if (r > 0) footprint.sections.push_back({{t[0], t[1]}, r * upright->radial});
+        if (r > 0) sections.push_back({{"centre", {t[0], t[1]}}, {"radius", r * upright->radial}});
       }
     }
   }
+  nlohmann::json footprint{{"surfaces", nlohmann::json::array()}, {"walls", walls}, {"objects", objects}, {"sections", sections}};
+  for (const Surface& surface : surfaces) footprint["surfaces"].push_back(surface.outline);
   return footprint;
 }
 
-// A round step near range / 8: 1, 2 or 5 times a power of ten.
-double tickStep(double range) {
-  const double raw = range / 8, power = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0}) {
-    if (m * power >= raw) return m * power;
+// The plotter, copied beside the tools by the build (demo/lidar/revolve_lidar_plot.py).
+std::filesystem::path plotterPath() {
+  std::error_code code;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", code);
+  if (code) throw std::runtime_error(std::string("cannot find this program's folder to run revolve-lidar-plot: ") + code.message());
+  return self.parent_path() / "revolve-lidar-plot";
+}
+
+// A file in the system's temporary folder, removed when this goes out of scope.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const char* suffix) {
+    path_ = (std::filesystem::temp_directory_path() / ("revolve-lidar-plot-XXXXXX" + std::string(suffix))).string();
+    const int descriptor = mkstemps(path_.data(), int(std::strlen(suffix)));
+    if (descriptor < 0) throw std::runtime_error(path_ + ": cannot create a temporary file: " + std::strerror(errno));
+    close(descriptor);
   }
-  return 10 * power;
+  ~TemporaryFile() { std::remove(path_.c_str()); }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+// The last non-empty line of a file (what a failing Python program says last).
+std::string lastLine(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  return last;
 }
 
-std::string tickLabel(double value, double step) {
-  char text[32];
-  const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
-  std::snprintf(text, sizeof text, "%.*f", decimals, std::abs(value) < 0.5 * step ? 0.0 : value);
-  return text;
+// Runs the plotter on `data`, its PNG on standard output going to `png`.
+void runPlotter(const nlohmann::json& data, std::FILE* png) {
+  const TemporaryFile input(".json"), messages(".log");
+  {
+    std::ofstream out(input.path());
+    out << data;
+    if (!out.flush()) throw std::runtime_error(input.path() + ": cannot write the plot's data");
+  }
+  std::fflush(png);
+  const std::string plotter = plotterPath().string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fileno(png), STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.path().c_str(), O_WRONLY | O_TRUNC, 0);
+  std::string dash = "-";
+  std::string inputPath = input.path();
+  std::string program = plotter;
+  char* argv[] = {program.data(), inputPath.data(), dash.data(), nullptr};
+  pid_t child = 0;
+  const int spawned = posix_spawn(&child, plotter.c_str(), &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("cannot run " + plotter + ": " + std::strerror(spawned));
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error("cannot wait for " + plotter + ": " + std::strerror(errno));
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    const std::string said = lastLine(messages.path());
+    throw std::runtime_error("revolve-lidar-plot failed" + (said.empty() ? std::string() : ": " + said));
+  }
 }
-
-const Rgba kInk{0.1f, 0.1f, 0.1f, 1}, kGrid{0.86f, 0.86f, 0.86f, 1}, kSurface{0.93f, 0.9f, 0.83f, 1};
-const Rgba kWall{0.3f, 0.3f, 0.32f, 1}, kObject{0.76f, 0.83f, 0.93f, 1}, kObjectEdge{0.45f, 0.55f, 0.72f, 1};
-const Rgba kSection{0.1f, 0.2f, 0.55f, 1}, kBeam{0.95f, 0.35f, 0.2f, 0.1f}, kReturn{0.8f, 0.05f, 0.05f, 1};
-const Rgba kSensor{0.05f, 0.55f, 0.15f, 1};
 
 }  // namespace
 
@@ -140,118 +194,38 @@ void checkPlotPath(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (extension != ".png") throw std::runtime_error(path + ": unsupported plot extension \"" + extension + "\"; the plot is a .png");
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  std::error_code code;
-  if (std::filesystem::is_directory(path, code)) throw std::runtime_error(path + ": is a directory, not a plot file");
-  const std::string where = folder.empty() ? "." : folder.string();
-  if (access(where.c_str(), W_OK) != 0) throw std::runtime_error(path + ": cannot create a file in " + where);
+  io::checkWritable(path);
+  const std::filesystem::path plotter = plotterPath();
+  if (access(plotter.c_str(), X_OK) != 0) {
+    throw std::runtime_error(path + ": cannot plot: the plotter " + plotter.string() + " is missing or not executable");
+  }
 }
 
 void writeScanPlot(const std::string& path, const ScanPlotInput& input) {
   std::vector<SensorFrame> frames;
   for (const io::RobotPose& pose : input.poses) frames.push_back(sensorFrame(input.sensor.pose, pose));
   const double sensorHeight = frames.empty() ? 0.0 : frames.front().origin[2];
-  const Footprint footprint = footprintOf(input.scene, sensorHeight);
 
-  // The extent of everything drawn, padded by 4%.
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  const auto include = [&](double x, double y) { x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y); };
-  for (const auto& s : footprint.surfaces) for (const Point& p : s.outline) include(p[0], p[1]);
-  for (const auto& w : footprint.walls) include(w[0][0], w[0][1]), include(w[1][0], w[1][1]);
-  for (const auto& o : footprint.objects) for (const Point& p : o) include(p[0], p[1]);
-  for (const SensorFrame& f : frames) include(f.origin[0], f.origin[1]);
-  for (const io::BeamReturn& b : input.scan.beams) {
-    if (!std::isinf(b.range)) include(b.x, b.y);
-  }
-  if (!(x1 > x0)) x0 -= 1, x1 += 1;
-  if (!(y1 > y0)) y0 -= 1, y1 += 1;
-  const double padX = 0.04 * (x1 - x0), padY = 0.04 * (y1 - y0);
-  x0 -= padX, x1 += padX, y0 -= padY, y1 += padY;
-
-  // Equal scales on both axes, the plot at most 1100 x 700 pixels, with margins for the labels.
-  const double scale = std::min(1100 / (x1 - x0), 700 / (y1 - y0));
-  const double left = 80, right = 30, top = 78, bottom = 62;
-  const double plotW = scale * (x1 - x0), plotH = scale * (y1 - y0);
-  Canvas canvas(int(std::ceil(left + plotW + right)), int(std::ceil(top + plotH + bottom)));
-  const auto at = [&](double x, double y) { return Pixel{left + (x - x0) * scale, top + (y1 - y) * scale}; };
-  const auto polygon = [&](const std::vector<Point>& points) {
-    std::vector<Pixel> out;
-    for (const Point& p : points) out.push_back(at(p[0], p[1]));
-    return out;
-  };
-
-  // Grid and ticks.
-  const double step = tickStep(std::max(x1 - x0, y1 - y0));
-  for (double x = std::ceil(x0 / step) * step; x <= x1; x += step) {
-    canvas.line(at(x, y0), at(x, y1), 1, kGrid);
-    canvas.text({at(x, y0).x, top + plotH + 20}, tickLabel(x, step), 13, kInk, TextAlign::centre);
-  }
-  for (double y = std::ceil(y0 / step) * step; y <= y1; y += step) {
-    canvas.line(at(x0, y), at(x1, y), 1, kGrid);
-    canvas.text({left - 8, at(x0, y).y + 5}, tickLabel(y, step), 13, kInk, TextAlign::right);
-  }
-
-  // The scene.
-  for (const auto& s : footprint.surfaces) canvas.fillPolygon(polygon(s.outline), kSurface);
-  for (const auto& o : footprint.objects) {
-    const std::vector<Pixel> outline = polygon(o);
-    canvas.fillPolygon(outline, kObject);
-    for (std::size_t i = 0; i < outline.size(); ++i) canvas.line(outline[i], outline[(i + 1) % outline.size()], 1.2, kObjectEdge);
-  }
-  for (const auto& s : footprint.sections) canvas.circle(at(s.centre[0], s.centre[1]), s.radius * scale, 2, kSection);
-  for (const auto& w : footprint.walls) canvas.line(at(w[0][0], w[0][1]), at(w[1][0], w[1][1]), 4, kWall);
-
-  // The scan.
+  nlohmann::json data = footprintOf(input.scene, sensorHeight);
+  data["poses"] = nlohmann::json::array();
+  const std::size_t beamsPerPose = input.scan.rings() * input.scan.azimuths.size();
   for (std::size_t pose = 0; pose < input.scan.poses; ++pose) {
-    const Pixel origin = at(frames[pose].origin[0], frames[pose].origin[1]);
-    for (std::size_t i = 0; i < input.scan.rings() * input.scan.azimuths.size(); ++i) {
-      const io::BeamReturn& b = input.scan.beams[pose * input.scan.rings() * input.scan.azimuths.size() + i];
-      if (!std::isinf(b.range)) canvas.line(origin, at(b.x, b.y), 1, kBeam);
+    const Vec3d heading = frames[pose].rotate({1, 0, 0});
+    const double h = std::hypot(heading[0], heading[1]);  // zero for a sensor looking straight up or down
+    nlohmann::json returns = nlohmann::json::array();
+    for (std::size_t i = 0; i < beamsPerPose; ++i) {
+      const io::BeamReturn& b = input.scan.beams[pose * beamsPerPose + i];
+      if (!std::isinf(b.range)) returns.push_back({b.x, b.y});
     }
+    data["poses"].push_back({{"origin", {frames[pose].origin[0], frames[pose].origin[1]}},
+                             {"heading", {h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0}},
+                             {"returns", std::move(returns)}});
   }
-  for (const io::BeamReturn& b : input.scan.beams) {
-    if (!std::isinf(b.range)) canvas.disc(at(b.x, b.y), 1.8, kReturn);
-  }
-  for (const SensorFrame& f : frames) {
-    const Vec3d heading = f.rotate({1, 0, 0});
-    const Pixel o = at(f.origin[0], f.origin[1]);
-    const double h = std::hypot(heading[0], heading[1]);
-    // White under the marker, so that it stands out of the beams' fan.
-    if (h > 0) {
-      canvas.line(o, {o.x + 28 * heading[0] / h, o.y - 28 * heading[1] / h}, 6, {1, 1, 1, 1});
-      canvas.line(o, {o.x + 26 * heading[0] / h, o.y - 26 * heading[1] / h}, 3, kSensor);
-    }
-    canvas.disc(o, 8.5, {1, 1, 1, 1});
-    canvas.disc(o, 6.5, kSensor);
-  }
-
-  // Frame, axis labels, title and legend.
-  const Pixel corners[4] = {at(x0, y1), at(x1, y1), at(x1, y0), at(x0, y0)};
-  for (int i = 0; i < 4; ++i) canvas.line(corners[i], corners[(i + 1) % 4], 1.5, kInk);
-  canvas.text({left + plotW / 2, top + plotH + 48}, "x [m]", 15, kInk, TextAlign::centre);
-  canvas.text({14, top + plotH / 2}, "y [m]", 15, kInk, TextAlign::left);
-  char title[256];
-  std::snprintf(title, sizeof title, "%s: %zu x %zu beams from %zu pose%s, sensor at z = %.3g m", input.scene.file.c_str(),
-                input.scan.rings(), input.scan.azimuths.size(), input.scan.poses, input.scan.poses == 1 ? "" : "s", sensorHeight);
-  canvas.text({left, 24}, title, 16, kInk);
-  double x = left;
-  const auto legend = [&](const Rgba& colour, const char* label, int kind) {
-    const double y = 52;
-    if (kind == 0) canvas.fillPolygon(std::vector<Pixel>{{x, y - 10}, {x + 18, y - 10}, {x + 18, y + 2}, {x, y + 2}}, colour);
-    if (kind == 1) canvas.line({x, y - 4}, {x + 18, y - 4}, 4, colour);
-    if (kind == 2) canvas.disc({x + 9, y - 4}, 4, colour);
-    if (kind == 3) canvas.circle({x + 9, y - 4}, 6, 2, colour);
-    canvas.text({x + 24, y + 1}, label, 13, kInk);
-    x += 24 + 8.2 * std::char_traits<char>::length(label) + 22;
-  };
-  legend(kSurface, "floor", 0);
-  legend(kWall, "wall", 1);
-  legend(kObject, "object (top view)", 0);
-  legend(kSection, "section at sensor height", 3);
-  legend({kBeam[0], kBeam[1], kBeam[2], 0.5f}, "beam", 1);
-  legend(kReturn, "return", 2);
-  legend(kSensor, "sensor", 2);
-  canvas.writePng(path);
+  std::ostringstream title;
+  title << input.scene.file << ": " << input.scan.rings() << " x " << input.scan.azimuths.size() << " beams from "
+        << input.scan.poses << (input.scan.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
+  data["title"] = title.str();
+  io::writeFileAtomically(path, [&](std::FILE* png) { runPlotter(data, png); });
 }
 
 }  // namespace revolve::robot

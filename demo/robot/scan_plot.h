@@ -2,7 +2,8 @@
 // non-vertical quads are filled (higher ones on top), walls drawn as thick lines, each object of
 // revolution as its outline seen from above with, for upright ones, its section at the first
 // pose's sensor height (what a 2-D scanner at that height sees); then every return's beam, the
-// returns, and each pose's sensor with its heading; axes in the scene's units (metres).
+// returns, and each pose's sensor with its heading; axes in the scene's units (metres). This file
+// projects the scene; matplotlib draws it (demo/lidar/revolve_lidar_plot.py, run as a child process).
 #pragma once
 
 #include "io/poses_file.h"
@@ -22,11 +23,12 @@ struct ScanPlotInput {
   const io::ScanTable& scan;
 };
 
-// Throws std::runtime_error naming the file unless it ends in .png (any case) and its folder
-// takes a new file. Call before scanning so that a typo costs nothing.
+// Throws std::runtime_error naming the file unless it ends in .png (any case), its folder takes a
+// new file and the plotter is beside this program. Call before scanning so that a typo costs nothing.
 void checkPlotPath(const std::string& path);
 
-// Draws and writes the plot (through a temporary file renamed into place).
+// Draws and writes the plot (through a temporary file renamed into place); std::runtime_error with
+// the plotter's last words when it fails (matplotlib missing, say).
 void writeScanPlot(const std::string& path, const ScanPlotInput& input);
 
 }  // namespace revolve::robot
