@@ -2,12 +2,13 @@
 //
 // The tree is the paper's: monotone intervals, refined uniformly (MR), grouped (MG). What changes is
 // its shape in memory. A leaf is a run of up to kLeafSegments segments of one monotone interval,
-// and its segments' own cylinder shells are tested eight at a time (AVX2) before any Wang quadratic
-// is set up; since z is monotone along the run, the segments that pass are met by the ray in index
-// order, and the run is visited in that order with no sorting. Above the leaves, nodes of eight
-// children test all their children's shells at once. A profile of up to 64 segments a monotone
-// interval thus costs one node test and a scan; 16,384 points cost four levels instead of the
-// binary tree's fourteen, each a handful of SIMD operations rather than a chain of branches.
+// and its segments' own cylinder shells are tested kFloatLanes at a time (eight with AVX2, four
+// with SSE2) before any Wang quadratic is set up; since z is monotone along the run, the segments
+// that pass are met by the ray in index order, and the run is visited in that order with no
+// sorting. Above the leaves, nodes of up to 64 children test all their children's shells the same
+// way. A profile of up to kFlatSegments segments is scanned whole, as one run; 16,384 points cost
+// a few node levels (64 children each) instead of the binary tree's fourteen, each a few SIMD
+// operations rather than a chain of branches.
 //
 // The shells are a filter in single precision, made conservative: bounds rounded outwards, squared
 // radii widened by the shell margin plus the float evaluation's error bound (wide_search.h), so a
