@@ -2,6 +2,7 @@
 // axis-aligned rectangle (a vertical cylinder beside an upright shape, seen in the meridian plane;
 // a point when degenerate) to the profile polyline. Each segment is solved in closed form; the
 // MIBIT tree's meridian boxes give lower bounds that skip far runs of the profile, best first.
+#include "mibit/best_first.h"
 #include "shape_impl.h"
 
 #include <algorithm>
@@ -105,29 +106,10 @@ class ClearanceSearch {
       : shape_(shape), rect_(rect), radial_(radial), axial_(axial) {}
 
   void run() {
-    const auto& nodes = shape_.mibit.nodes;
-    struct Entry {
-      std::uint32_t node;
-      double bound;
-    };
-    Entry stack[64];  // depth + 1 entries at most, as in the ray search (queries.cpp does the same)
-    int top = 0;
-    stack[top++] = {0, nodeBound(nodes[0])};
-    while (top > 0) {
-      const Entry current = stack[--top];
-      if (current.bound >= best_.value) continue;
-      const detail::MibitNode& node = nodes[current.node];
-      if (node.kind == detail::MibitNode::Kind::interval) {
-        searchInterval(shape_.mibit.intervals[node.first]);
-      } else if (node.kind == detail::MibitNode::Kind::segments) {
-        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) visit(k);
-      } else {
-        const Entry a{node.first, nodeBound(nodes[node.first])};
-        const Entry b{node.first + 1, nodeBound(nodes[node.first + 1])};
-        stack[top++] = a.bound <= b.bound ? b : a;  // the nearer is popped first
-        stack[top++] = a.bound <= b.bound ? a : b;
-      }
-    }
+    detail::searchBestFirst(
+        shape_.mibit, shape_.local,
+        [&](double rMin, double rMax, double zLow, double zHigh) { return scaledBoxBound(rMin, rMax, zLow, zHigh); },
+        [&](double bound) { return bound >= best_.value; }, [&](std::uint32_t k) { visit(k); });
   }
 
   const Candidate& best() const { return best_; }
@@ -139,40 +121,6 @@ class ClearanceSearch {
   double scaledBoxBound(double rMin, double rMax, double zLow, double zHigh) const {
     const double za = zLow * axial_, zb = zHigh * axial_;
     return boxBound(rect_, rMin * radial_, rMax * radial_, std::min(za, zb), std::max(za, zb));
-  }
-  // Node boxes are floats rounded outwards (mibit_tree.h), so they hold their runs.
-  double nodeBound(const detail::MibitNode& node) const { return scaledBoxBound(node.rMin, node.rMax, node.zLow, node.zHigh); }
-
-  // Inside a monotone interval a run's box is spanned by its end vertices.
-  void searchInterval(const detail::MonotoneInterval& interval) {
-    struct Entry {
-      std::uint32_t leafBegin, leafEnd;
-      double bound;
-    };
-    Entry stack[64];
-    int top = 0;
-    stack[top++] = {0, interval.leaves, -std::numeric_limits<double>::infinity()};
-    while (top > 0) {
-      const Entry current = stack[--top];
-      if (current.bound >= best_.value) continue;
-      const std::uint32_t a = detail::MibitTree::leafVertex(interval, current.leafBegin);
-      const std::uint32_t b = detail::MibitTree::leafVertex(interval, current.leafEnd);
-      if (current.leafEnd - current.leafBegin == 1) {
-        for (std::uint32_t k = a; k < b; ++k) visit(k);
-        continue;
-      }
-      const std::uint32_t middle = (current.leafBegin + current.leafEnd) / 2;
-      const std::uint32_t m = detail::MibitTree::leafVertex(interval, middle);
-      const Entry left{current.leafBegin, middle, runBound(a, m)};
-      const Entry right{middle, current.leafEnd, runBound(m, b)};
-      stack[top++] = left.bound <= right.bound ? right : left;
-      stack[top++] = left.bound <= right.bound ? left : right;
-    }
-  }
-
-  double runBound(std::uint32_t a, std::uint32_t b) const {
-    const Point2 p = shape_.local[a], q = shape_.local[b];
-    return scaledBoxBound(std::min(p.r, q.r), std::max(p.r, q.r), std::min(p.z, q.z), std::max(p.z, q.z));
   }
 
   void visit(std::uint32_t k) {
