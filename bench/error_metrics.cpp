@@ -2,6 +2,8 @@
 
 #include "ray_batches.h"
 
+#include "common/embree_rays.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -36,7 +38,7 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
   tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayHit = rayHitOf(rays[i]);
+    RTCRayHit rayHit = app::embreeRayHit(rays[i]);
     rtcIntersect1(scene, &context, &rayHit);
     PerRay& result = results[i];
     result.hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;

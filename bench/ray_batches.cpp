@@ -1,5 +1,7 @@
 #include "ray_batches.h"
 
+#include "common/embree_rays.h"
+
 #include <tbb/parallel_for.h>
 
 #include <stdexcept>
@@ -11,21 +13,6 @@ constexpr std::size_t kBatchRays = 1024;        // per batch on one thread: 20 u
 constexpr std::size_t kThreadedBatchRays = 16384;  // enough work to spread over the threads
 
 }  // namespace
-
-RTCRayHit rayHitOf(const Ray& ray) {
-  RTCRayHit rayHit{};
-  rayHit.ray.org_x = ray.origin.x;
-  rayHit.ray.org_y = ray.origin.y;
-  rayHit.ray.org_z = ray.origin.z;
-  rayHit.ray.dir_x = ray.direction.x;
-  rayHit.ray.dir_y = ray.direction.y;
-  rayHit.ray.dir_z = ray.direction.z;
-  rayHit.ray.tnear = ray.tnear;
-  rayHit.ray.tfar = ray.tfar;
-  rayHit.ray.mask = ~0u;
-  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  return rayHit;
-}
 
 std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays) {
   if (rays.size() % 8 != 0) throw std::invalid_argument("packetsOf: the ray count must be a multiple of 8");
@@ -57,7 +44,7 @@ std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ra
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     for (std::size_t i = 0; i < kBatchRays; ++i) {
-      RTCRayHit rayHit = rayHitOf(rays[cursor]);
+      RTCRayHit rayHit = app::embreeRayHit(rays[cursor]);
       rtcIntersect1(scene, &context, &rayHit);
       if (++cursor == rays.size()) cursor = 0;
     }
@@ -85,7 +72,7 @@ std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray
     tbb::parallel_for(std::size_t{0}, kThreadedBatchRays, [&](std::size_t i) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
-      RTCRayHit rayHit = rayHitOf(rays[(start + i) % rays.size()]);
+      RTCRayHit rayHit = app::embreeRayHit(rays[(start + i) % rays.size()]);
       rtcIntersect1(scene, &context, &rayHit);
     });
     cursor = (start + kThreadedBatchRays) % rays.size();

@@ -13,8 +13,6 @@
 
 namespace revolve::bench {
 
-RTCRayHit rayHitOf(const Ray& ray);
-
 // Rays 8i .. 8i + 7 of `rays` as packet i (rays.size() must be a multiple of 8).
 std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays);
 

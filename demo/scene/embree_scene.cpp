@@ -1,5 +1,6 @@
 #include "scene/embree_scene.h"
 
+#include "common/embree_rays.h"
 #include "common/vector_math.h"
 
 #include <tbb/parallel_for.h>
@@ -85,23 +86,6 @@ Vec3 pushAlongNormal(Vec3 p, Vec3 n, float distance, Vec3 direction) {
   if (app::dot(n, direction) < 0) distance = -distance;
   const Vec3 offset = distance * n;
   return {awayFrom(p.x + offset.x, offset.x), awayFrom(p.y + offset.y, offset.y), awayFrom(p.z + offset.z, offset.z)};
-}
-
-RTCRayHit embreeRay(const Ray& ray) {
-  RTCRayHit rayHit{};
-  rayHit.ray.org_x = ray.origin.x;
-  rayHit.ray.org_y = ray.origin.y;
-  rayHit.ray.org_z = ray.origin.z;
-  rayHit.ray.dir_x = ray.direction.x;
-  rayHit.ray.dir_y = ray.direction.y;
-  rayHit.ray.dir_z = ray.direction.z;
-  rayHit.ray.tnear = ray.tnear;
-  rayHit.ray.tfar = ray.tfar;
-  rayHit.ray.mask = ~0u;
-  rayHit.ray.flags = 0;
-  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  return rayHit;
 }
 
 }  // namespace
@@ -247,7 +231,7 @@ EmbreeScene::~EmbreeScene() {
 std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rayHit = embreeRay(ray);
+  RTCRayHit rayHit = app::embreeRayHit(ray);
   rtcIntersect1(top_.get(), &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
@@ -256,7 +240,7 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
 std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rayHit = embreeRay(ray);
+  RTCRayHit rayHit = app::embreeRayHit(ray);
   rtcIntersect1(top_.get(), &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
@@ -266,7 +250,7 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay shadow = embreeRay(ray).ray;
+  RTCRay shadow = app::embreeRayHit(ray).ray;
   rtcOccluded1(top_.get(), &context, &shadow);
   return shadow.tfar == -std::numeric_limits<float>::infinity();
 }

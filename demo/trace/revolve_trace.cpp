@@ -2,6 +2,7 @@
 // Embree (rtcIntersect1 on a scene holding the shape), written as CSV. An interface other tools
 // depend on: its options and file formats are documented in README.md and kept exact.
 #include "common/embree_handles.h"
+#include "common/embree_rays.h"
 #include "io/text_files.h"
 
 #include <revolve/revolve.h>
@@ -86,17 +87,7 @@ std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>&
     const Ray& ray = rays[i];
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayHit{};
-    rayHit.ray.org_x = ray.origin.x;
-    rayHit.ray.org_y = ray.origin.y;
-    rayHit.ray.org_z = ray.origin.z;
-    rayHit.ray.dir_x = ray.direction.x;
-    rayHit.ray.dir_y = ray.direction.y;
-    rayHit.ray.dir_z = ray.direction.z;
-    rayHit.ray.tnear = ray.tnear;
-    rayHit.ray.tfar = ray.tfar;
-    rayHit.ray.mask = ~0u;
-    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayHit = app::embreeRayHit(ray);
     rtcIntersect1(scene, &context, &rayHit);
     if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
       hits[i] = mesh ? meshHit(profile, slices, ray, rayHit) : exactHit(rayHit);
