@@ -1,16 +1,24 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages revolve needs, skipping those already installed.
-# Usage: scripts/install-deps.sh [--test]   (--test adds what the test suite needs)
+# Usage: scripts/install-deps.sh [--test]
+#   (none)   what the main job builds and runs: the library and revolve-render
+#   --test   also what the whole test suite needs: GoogleTest, Google Benchmark, clang with its
+#            sanitizer and libFuzzer runtimes, matplotlib (revolve-lidar --plot, bench/plot_results.py)
 set -euo pipefail
 
 packages=(
-  cmake ninja-build g++ pkg-config
-  libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev libopenimageio-dev
-  python3-matplotlib  # revolve-lidar --plot and bench/plot_results.py
+  cmake ninja-build g++
+  libembree-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+  # Debian's libopenimageio-dev exports CMake targets for OpenImageIO's command-line tools, which
+  # live in openimageio-tools: without it find_package(OpenImageIO) fails at configure time
+  # ("imported target OpenImageIO::iconvert references the file /usr/bin/iconvert").
+  libopenimageio-dev openimageio-tools
 )
-if [[ "${1:-}" == "--test" ]]; then
-  packages+=(libgtest-dev libgmock-dev clang libclang-rt-14-dev)
-fi
+case "${1:-}" in
+  "") ;;
+  --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3-matplotlib) ;;
+  *) echo "usage: $0 [--test]" >&2; exit 2 ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do
@@ -24,6 +32,10 @@ fi
 
 sudo=()
 if [[ "$(id -u)" -ne 0 ]]; then
+  if ! command -v sudo >/dev/null; then
+    echo "$0: these Debian packages are missing and installing them needs root (or sudo): ${missing[*]}" >&2
+    exit 1
+  fi
   sudo=(sudo)
 fi
 echo "Installing: ${missing[*]}"
