@@ -25,8 +25,10 @@ struct Roots {
   double x[2];
 };
 
-// Roots of g in [x0, x1] (x0 <= x1), in increasing order. A double root at the extremum (a tangent
-// touch, discriminant exactly 0) is reported twice.
+// Roots of g in [x0, x1] (x0 <= x1), in increasing order; with kFirstOnly, only the first of them
+// (the nearest hit wants no more, and is spared the second root's division). A double root at the
+// extremum (a tangent touch, discriminant exactly 0) is reported twice (once with kFirstOnly).
+template <bool kFirstOnly = false>
 inline Roots bracketedRoots(const Quadratic& g, double x0, double x1, bool inside0, bool inside1) noexcept {
   Roots roots;
   const auto push = [&](double x, double lo, double hi) { roots.x[roots.count++] = std::clamp(x, lo, hi); };
@@ -41,27 +43,28 @@ inline Roots bracketedRoots(const Quadratic& g, double x0, double x1, bool insid
 
   const double D = g.B * g.B - g.A * g.C;
   const double sqrtD = std::sqrt(std::max(D, 0.0));  // D < 0 only when signs and D disagree by rounding
-  // Stable pair: q has no cancellation; the roots are q / A and C / q.
+  // Stable pair: q has no cancellation; the roots are q / A and C / q, and which is the lower
+  // follows from the signs of A and B (copysign gives q the sign opposite to B's sign bit).
   const double q = -(g.B + std::copysign(sqrtD, g.B));
-  double low, high;
-  if (q == 0.0) {
-    low = high = 0.0;  // B == 0 and D == 0: double root at the extremum x = 0
-  } else {
-    low = q / g.A;
-    high = g.C / q;
-    if (low > high) std::swap(low, high);
-  }
-  const double e = -g.B / g.A;
+  const double invA = 1.0 / g.A;
+  const bool qOverAIsLow = !std::signbit(g.B) == (g.A > 0.0);
+  // q == 0 only when B == 0 and D == 0: a double root at the extremum x = 0.
+  const auto low = [&] { return q == 0.0 ? 0.0 : qOverAIsLow ? q * invA : g.C / q; };
+  const auto high = [&] { return q == 0.0 ? 0.0 : qOverAIsLow ? g.C / q : q * invA; };
+  const double e = -g.B * invA;
   // Inside at the extremum: for a convex g its minimum is -D/A <= 0 (a touch, D == 0, counts as
   // reaching the surface); for a concave g its maximum is -D/A < 0.
   const bool insideE = g.A > 0.0 ? D >= 0.0 : D < 0.0;
 
   if (x0 < e && e < x1) {
-    if (inside0 != insideE) push(low, x0, e);
-    if (insideE != inside1) push(high, e, x1);
+    if (inside0 != insideE) {
+      push(low(), x0, e);
+      if constexpr (kFirstOnly) return roots;
+    }
+    if (insideE != inside1) push(high(), e, x1);
   } else if (inside0 != inside1) {
     // g is monotone on [x0, x1]: one root, the one on the interval's side of e.
-    push(e <= x0 ? high : low, x0, x1);
+    push(e <= x0 ? high() : low(), x0, x1);
   }
   return roots;
 }

@@ -88,7 +88,9 @@ inline bool alongSurface(const MeridianRay& ray, const Quadratic& g, double m, P
 
 }  // namespace segment_hits_internal
 
-// All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order.
+// All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order;
+// with kFirstOnly only the first of them (the same value: only the second root's work is skipped).
+template <bool kFirstOnly = false>
 inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, double lo, double hi) noexcept {
   using namespace segment_hits_internal;
   SegmentHits hits;
@@ -141,10 +143,10 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
         // Every point of [x0, x1] lies on the surface within rounding: the first is the hit, and
         // the last too when the end signs agree, so that the parity they dictate holds.
         hits.s[hits.count++] = x0;
-        if (inside0 == inside1 && x1 > x0) hits.s[hits.count++] = x1;
+        if (!kFirstOnly && inside0 == inside1 && x1 > x0) hits.s[hits.count++] = x1;
         return hits;
       }
-      const Roots roots = bracketedRoots(g, x0 - m, x1 - m, inside0, inside1);
+      const Roots roots = bracketedRoots<kFirstOnly>(g, x0 - m, x1 - m, inside0, inside1);
       // Clamped again after adding m back, which rounds: a root must not leave its segment's stretch.
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(m + roots.x[i], x0, x1);
     }
@@ -161,7 +163,7 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
       // a * (rho^2 - radius^2) about the closest approach to the axis: a^2 x^2 + cross^2 - a radius^2.
       const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
       const Roots roots =
-          bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
+          bracketedRoots<kFirstOnly>(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(ray.sAxis + roots.x[i], lo, hi);
       hits.solved = true;
     }
