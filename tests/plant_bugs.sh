@@ -37,11 +37,26 @@ fail() {
   exit 1
 }
 
-# Brings the copy to the working tree's sources (only changed files are rewritten, so the build
-# stays incremental).
+# Lists the tree's files (not its builds, outputs or git data), NUL-separated, relative to $1.
+tree_files() {
+  (cd "$1" && find . \( -path ./.git -o -path './build*' -o -path ./out -o -path ./.cache \) -prune -o -type f -print0)
+}
+
+# Brings the copy to the working tree's files. Only files that differ are rewritten, and they get a
+# new modification time (never the original's, which may be older than the copy's objects built
+# from a plant), so the build stays incremental and never stale.
 sync_copy() {
+  local file
   mkdir -p "$copy"
-  rsync -a --checksum --delete --exclude '/build*' --exclude '/out' --exclude '/.git' "$source_dir/" "$copy/"
+  while IFS= read -r -d '' file; do
+    if ! cmp -s "$source_dir/$file" "$copy/$file"; then
+      mkdir -p "$(dirname "$copy/$file")"
+      cp "$source_dir/$file" "$copy/$file"
+    fi
+  done < <(tree_files "$source_dir")
+  while IFS= read -r -d '' file; do
+    [[ -e "$source_dir/$file" ]] || rm "$copy/$file"
+  done < <(tree_files "$copy")
 }
 
 # replace FILE FRAGMENT REPLACEMENT: the one occurrence of FRAGMENT in FILE, literally.
