@@ -77,42 +77,64 @@ Ray ray(Vec3 origin, Vec3 direction, float tnear = 0.0f, float tfar = kInf) { re
 // Capped cylinder of radius 1 over z in [0, 1], its wall split at z = 0.5: segments 0 (bottom
 // disc), 1 (wall, heights [0, 0.5)), 2 (wall, [0.5, 1)), 3 (top disc).
 ShapeCases splitCylinder() {
-  ShapeCases s{"capped cylinder r = 1, z in [0, 1], wall vertex at z = 0.5", {{0, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}}, {}};
+  ShapeCases s{"capped cylinder r = 1, z in [0, 1], wall vertex at z = 0.5",
+               {{0, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}},
+               {}};
   // Horizontal rays at vertex heights. Along an axis through the z axis a ray meets the circle of
   // radius 1 at distance |origin| -+ 1 along it: t is exact, and u is exact on the axes.
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (wall vertex) from outside: segment 2's circle", ray({-4, 0, 0.5}, {1, 0, 0}), Expected{3, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from outside, direction of length 2", ray({-4, 0, 0.5}, {2, 0, 0}), Expected{1.5, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis", ray({0, 0, 0.5}, {0, -1, 0}), Expected{1, 2, 0.75f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, off the axis", ray({0.5, 0, 0.5}, {1, 0, 0}), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim) from outside: segment 1's circle", ray({4, 0, 0}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside, tnear > 0", ray({0, 0, 0}, {0, 0.5, 0}, 1), Expected{2, 1, 0.25f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss", ray({-4, 0, 1}, {1, 0, 0}), std::nullopt});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (wall vertex) from outside: segment 2's circle",
+                     ray({-4, 0, 0.5}, {1, 0, 0}), Expected{3, 2, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from outside, direction of length 2",
+                     ray({-4, 0, 0.5}, {2, 0, 0}), Expected{1.5, 2, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis",
+                     ray({0, 0, 0.5}, {0, -1, 0}), Expected{1, 2, 0.75f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, off the axis",
+                     ray({0.5, 0, 0.5}, {1, 0, 0}), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim) from outside: segment 1's circle",
+                     ray({4, 0, 0}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside, tnear > 0",
+                     ray({0, 0, 0}, {0, 0.5, 0}, 1), Expected{2, 1, 0.25f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss",
+                     ray({-4, 0, 1}, {1, 0, 0}), std::nullopt});
   // Tangent to the wall in a horizontal plane: the line y = 1 touches the circle of radius 1 at
   // (0, 1), t = 4; the kernel's quadratic there is x^2 + (1 - 1), whose discriminant is exactly 0.
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.25", ray({-4, 1, 0.25}, {1, 0, 0}), Expected{4, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.75", ray({1, -4, 0.75}, {0, 2, 0}), Expected{2, 2, 0.0f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.25",
+                     ray({-4, 1, 0.25}, {1, 0, 0}), Expected{4, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.75",
+                     ray({1, -4, 0.75}, {0, 2, 0}), Expected{2, 2, 0.0f}});
   // Hits exactly at tfar on an oblique ray, where the ray enters the solid. (Only entries: at tfar
   // the kernel counts a point on the surface as inside, so an exit exactly at tfar, or at tnear,
-  // is not reported.) The hit (1, 0, 0.75) on segment 2 is the point of the
-  // ray nearest the shape's centre (0, 0, 0.5), since the direction (-1, 0, 4) is perpendicular to
-  // (1, 0, 0.25): the kernel re-centres the ray there, so the hit is at its s = 0, where rho = 1
-  // and the cone function are exact (tCentre = 8.5 / 17 = 0.5 exactly). The ray enters the wall
-  // there from outside (it passes z = 0 at x = 1.1875 and z = 0.5 at x = 1.0625, outside the
-  // caps and the vertex circle), with the closest approach to the axis far beyond (t = 1.5).
+  // is not reported.) The hit (1, 0, 0.75) on segment 2 is the point of the ray nearest the
+  // shape's centre (0, 0, 0.5), since the direction (-1, 0, 4) is perpendicular to (1, 0, 0.25):
+  // the kernel re-centres the ray there, so the hit is at its s = 0, where rho = 1 and the cone
+  // function are exact (tCentre = 8.5 / 17 = 0.5 exactly). The ray enters the wall there from
+  // outside (it passes z = 0 at x = 1.1875 and z = 0.5 at x = 1.0625, outside the caps and the
+  // vertex circle), with the closest approach to the axis far beyond (t = 1.5).
   const Vec3 from{1.5, 0, -1.25};
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar", ray(from, {-1, 0, 4}, 0, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar, tnear > 0", ray(from, {-1, 0, 4}, 0.25, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear = tfar", ray(from, {-1, 0, 4}, 0.5, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear", ray(from, {-1, 0, 4}, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, tfar one float short of the hit", ray(from, {-1, 0, 4}, 0, std::nextafter(0.5f, 0.0f)), std::nullopt});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar",
+                     ray(from, {-1, 0, 4}, 0, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar, tnear > 0",
+                     ray(from, {-1, 0, 4}, 0.25, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear = tfar",
+                     ray(from, {-1, 0, 4}, 0.5, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear",
+                     ray(from, {-1, 0, 4}, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, tfar one float short of the hit",
+                     ray(from, {-1, 0, 4}, 0, std::nextafter(0.5f, 0.0f)), std::nullopt});
   // The same line at other speeds k (-1, 0, 4): the hit at t = 0.5 / k, the centre still at it.
-  s.cases.push_back({Rule::inclusiveRange, "oblique, direction halved, hit at t = tfar = 1", ray(from, {-0.5, 0, 2}, 0, 1), Expected{1, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, direction times 4, hit at t = tfar = 0.125", ray(from, {-4, 0, 16}, 0, 0.125), Expected{0.125, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, direction halved, hit at t = tfar = 1",
+                     ray(from, {-0.5, 0, 2}, 0, 1), Expected{1, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, direction times 4, hit at t = tfar = 0.125",
+                     ray(from, {-4, 0, 16}, 0, 0.125), Expected{0.125, 2, 0.0f}});
   // u at the wrap: the hit (1, -2^-30, 0.25) lies just below the +x axis; its exact u,
   // 1 - atan(2^-30) / 2 pi = 1 - 1.5e-10, is nearer 1 than the float below 1 (1 - 2^-24), so it
   // rounds to 1, the same azimuth as 0, and [0, 1) makes it 0. Horizontal, along -x: t = 4 - 1.
-  s.cases.push_back({Rule::uWrap, "u just below the +x axis wraps to 0", ray({4, -0x1p-30f, 0.25}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
-  s.cases.push_back({Rule::uWrap, "u just below the +x axis, oblique ray", ray({4, -0x1p-30f, 0.75 - 3 * 0.125}, {-1, 0, 0.125}), Expected{3, 2, 0.0f}});
+  // Obliquely, rising 1/8 a unit, the ray meets the wall at (1, -2^-30, 0.75): there the kernel's t
+  // is within double rounding of 3, which rounds to the float 3, and y = -2^-30 exactly.
+  s.cases.push_back({Rule::uWrap, "u just below the +x axis wraps to 0",
+                     ray({4, -0x1p-30f, 0.25}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
+  s.cases.push_back({Rule::uWrap, "u just below the +x axis, oblique ray",
+                     ray({4, -0x1p-30f, 0.75 - 3 * 0.125}, {-1, 0, 0.125}), Expected{3, 2, 0.0f}});
   return s;
 }
 
@@ -125,12 +147,17 @@ ShapeCases plainCylinder() {
   // the ray's stretch in the wall's slab is symmetric about it, so the kernel expands its quadratic
   // exactly there: B = 0 and C = 1 - 1 = 0 exactly, a discriminant of exactly 0. The ray crosses
   // the caps' planes at rho^2 = 1 + x^2 > 1, outside them.
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 1)", ray({-2, 1, -1.5}, {1, 0, 1}), Expected{2, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (2, 0, 2)", ray({-2, 1, -1.5}, {2, 0, 2}), Expected{1, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 0.5)", ray({-2, 1, -0.5}, {1, 0, 0.5}), Expected{2, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, tfar at the touch", ray({-2, 1, -1.5}, {1, 0, 1}, 0, 2), Expected{2, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 1)",
+                     ray({-2, 1, -1.5}, {1, 0, 1}), Expected{2, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (2, 0, 2)",
+                     ray({-2, 1, -1.5}, {2, 0, 2}), Expected{1, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 0.5)",
+                     ray({-2, 1, -0.5}, {1, 0, 0.5}), Expected{2, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, tfar at the touch",
+                     ray({-2, 1, -1.5}, {1, 0, 1}, 0, 2), Expected{2, 1, 0.25f}});
   // One float to the side the same line misses: the touch is a hit only because it is exact.
-  s.cases.push_back({Rule::tangentTouch, "oblique, one float outside the tangent", ray({-2, std::nextafter(1.0f, 2.0f), -1.5}, {1, 0, 1}), std::nullopt});
+  s.cases.push_back({Rule::tangentTouch, "oblique, one float outside the tangent",
+                     ray({-2, std::nextafter(1.0f, 2.0f), -1.5}, {1, 0, 1}), std::nullopt});
   return s;
 }
 
@@ -138,27 +165,42 @@ ShapeCases plainCylinder() {
 // then the cylinder r = 0.5 up to z = 1. Segments 0 (bottom disc), 1 (cone, [0, 0.25)), 2 (cone,
 // [0.25, 0.5)), 3 (cylinder, [0.5, 1)), 4 (top disc).
 ShapeCases frustum() {
-  ShapeCases s{"frustum r = 1 - z below z = 0.5, cylinder r = 0.5 above", {{0, 0}, {1, 0}, {0.75, 0.25}, {0.5, 0.5}, {0.5, 1}, {0, 1}}, {}};
+  ShapeCases s{"frustum r = 1 - z below z = 0.5, cylinder r = 0.5 above",
+               {{0, 0}, {1, 0}, {0.75, 0.25}, {0.5, 0.5}, {0.5, 1}, {0, 1}},
+               {}};
   // Horizontal rays at vertex heights on the cone stretch.
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 (cone vertex, r = 0.75) from outside", ray({-4, 0, 0.25}, {1, 0, 0}), Expected{3.25, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 from inside", ray({0, 0, 0.25}, {0, 1, 0}), Expected{0.75, 2, 0.25f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (cone to cylinder, r = 0.5) from outside", ray({0, -4, 0.5}, {0, 2, 0}), Expected{1.75, 3, 0.75f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside", ray({0, 0, 0.5}, {-0.25, 0, 0}), Expected{2, 3, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim, r = 1) from inside", ray({0, 0, 0}, {-1, 0, 0}), Expected{1, 1, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 (cone vertex, r = 0.75) from outside",
+                     ray({-4, 0, 0.25}, {1, 0, 0}), Expected{3.25, 2, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 from inside",
+                     ray({0, 0, 0.25}, {0, 1, 0}), Expected{0.75, 2, 0.25f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (cone to cylinder, r = 0.5) from outside",
+                     ray({0, -4, 0.5}, {0, 2, 0}), Expected{1.75, 3, 0.75f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside",
+                     ray({0, 0, 0.5}, {-0.25, 0, 0}), Expected{2, 3, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim, r = 1) from inside",
+                     ray({0, 0, 0}, {-1, 0, 0}), Expected{1, 1, 0.5f}});
   // Vertical rays down at x = 0.875 enter the cone where 1 - z = 0.875, z = 0.125, inside segment
   // 1's slab (they pass the top cap and both vertex circles outside them). Every quantity the
   // kernel forms is exact: the direction is (0, 0, -1) times a power of two, and rho = 0.875 and
   // the cone's radius at z = 0.125 are dyadic.
   const Vec3 above{0.875, 0, 2};
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 4)", ray(above, {0, 0, -4}, 0, 0.46875), Expected{0.46875, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar, tnear > 0", ray(above, {0, 0, -4}, 0.25, 0.46875), Expected{0.46875, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear = tfar", ray(above, {0, 0, -4}, 0.46875, 0.46875), Expected{0.46875, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear", ray(above, {0, 0, -4}, 0.46875), Expected{0.46875, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, tfar one float short of the hit", ray(above, {0, 0, -4}, 0, std::nextafter(0.46875f, 0.0f)), std::nullopt});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 0.5)", ray(above, {0, 0, -0.5}, 0, 3.75), Expected{3.75, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, tfar = 3.5 before the hit at 3.75 (|d| = 0.5)", ray(above, {0, 0, -0.5}, 0, 3.5), std::nullopt});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 4)",
+                     ray(above, {0, 0, -4}, 0, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar, tnear > 0",
+                     ray(above, {0, 0, -4}, 0.25, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear = tfar",
+                     ray(above, {0, 0, -4}, 0.46875, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear",
+                     ray(above, {0, 0, -4}, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, tfar one float short of the hit",
+                     ray(above, {0, 0, -4}, 0, std::nextafter(0.46875f, 0.0f)), std::nullopt});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 0.5)",
+                     ray(above, {0, 0, -0.5}, 0, 3.75), Expected{3.75, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, tfar = 3.5 before the hit at 3.75 (|d| = 0.5)",
+                     ray(above, {0, 0, -0.5}, 0, 3.5), std::nullopt});
   // Starting past the cone, the ray next meets the bottom disc at z = 0, t = 4.
-  s.cases.push_back({Rule::inclusiveRange, "vertical, tnear = 3.875 past the hit at 3.75 (|d| = 0.5)", ray(above, {0, 0, -0.5}, 3.875), Expected{4, 0, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, tnear = 3.875 past the hit at 3.75 (|d| = 0.5)",
+                     ray(above, {0, 0, -0.5}, 3.875), Expected{4, 0, 0.0f}});
   return s;
 }
 
@@ -166,13 +208,17 @@ ShapeCases frustum() {
 // heights are [0, 1).
 ShapeCases openCone() {
   ShapeCases s{"open cone, apex (0, 0, 1), rim r = 0.5 at z = 0", {{0, 1}, {0.5, 0}}, {}};
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (the rim) from outside", ray({-4, 0, 0}, {1, 0, 0}), Expected{3.5, 0, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (the rim) from outside",
+                     ray({-4, 0, 0}, {1, 0, 0}), Expected{3.5, 0, 0.5f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside", ray({0, 0, 0}, {0, 1, 0}), Expected{0.5, 0, 0.25f}});
   // In the rim's plane the line y = 0.5 touches the rim circle at (0, 0.5): exactly tangent.
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the rim", ray({-4, 0.5, 0}, {1, 0, 0}), Expected{4, 0, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the rim",
+                     ray({-4, 0.5, 0}, {1, 0, 0}), Expected{4, 0, 0.25f}});
   // At z = 0.5 the cone's radius is 0.25, exactly: the line y = -0.25 touches it at (0, -0.25).
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the cone at z = 0.5", ray({-4, -0.25, 0.5}, {1, 0, 0}), Expected{4, 0, 0.75f}});
-  s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the rim", ray({-4, std::nextafter(0.5f, 1.0f), 0}, {1, 0, 0}), std::nullopt});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the cone at z = 0.5",
+                     ray({-4, -0.25, 0.5}, {1, 0, 0}), Expected{4, 0, 0.75f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the rim",
+                     ray({-4, std::nextafter(0.5f, 1.0f), 0}, {1, 0, 0}), std::nullopt});
   return s;
 }
 

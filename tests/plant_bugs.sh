@@ -76,7 +76,8 @@ build_and_test() {
   cmake --build "$build" -j"$jobs" >"$log.build" 2>&1 || fail "the build failed: see $log.build"
   (cd "$build" && ctest --no-tests=error -j"$jobs" "${ctest_args[@]}" >"$log" 2>&1) || true
   grep -q "tests passed" "$log" || fail "ctest did not finish: see $log"
-  sed -n '/The following tests FAILED:/,$p' "$log" | sed -nE 's/^[[:space:]]*[0-9]+ - (.*) \((Failed|Timeout|SEGFAULT|Subprocess aborted|Exception|.*)\)$/\1/p'
+  sed -n '/The following tests FAILED:/,$p' "$log" | sed -nE 's/^[[:space:]]*[0-9]+ - (.*) \([^()]*\)$/\1/p' |
+    sed -E 's/ +# GetParam\(\) = .*//'
 }
 
 # Every fragment is checked before anything is built.

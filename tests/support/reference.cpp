@@ -121,8 +121,9 @@ bool linePassesThrough(const RefRay& ray, Real z, Real& t) {
 //
 // Two rules of the library's (revolve.h, README's Hard cases) decide what rounding cannot:
 // - The apex rule: a line through the apex of a segment reaching the axis meets the double cone
-//   there only (unless it lies on it), a double root that rounding of the coefficients would keep
-//   or lose at random. Such a ray touches the surface at the apex: a hit, whatever its plane.
+//   there only, a double root that rounding of the coefficients would keep or lose at random.
+//   Such a ray touches the surface at the apex: a hit, whatever its plane. (A line along a
+//   generator, all of whose points are roots, is reported at the apex alone.)
 // - The half-open height rule for a ray in a horizontal plane (dz = 0): the segment owns the
 //   heights [zMin, zMax), so at a vertex's height the ray meets the circles of the segments that
 //   continue upwards from it, the cross-section just above the plane (at a top rim, nothing).
@@ -514,12 +515,15 @@ bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long d
 
 bool passesNearAnApex(std::span<const Point2> profile, const RefRay& ray, long double distance) {
   const Vec d = direction(ray);
-  for (const Point2& p : profile) {
-    if (p.r != 0) continue;
-    // The apex's offset from the origin, less its projection on the line.
-    const Vec offset = Vec{0, 0, p.z} - origin(ray);
-    const Vec across = offset - (dot(offset, d) / dot(d, d)) * d;
-    if (length(across) <= distance) return true;
+  for (std::size_t i = 0; i + 1 < profile.size(); ++i) {
+    if (profile[i].z == profile[i + 1].z) continue;  // a disc's centre is no apex
+    for (const Point2& p : {profile[i], profile[i + 1]}) {
+      if (p.r != 0) continue;
+      // The apex's offset from the origin, less its projection on the line.
+      const Vec offset = Vec{0, 0, p.z} - origin(ray);
+      const Vec across = offset - (dot(offset, d) / dot(d, d)) * d;
+      if (length(across) <= distance) return true;
+    }
   }
   return false;
 }

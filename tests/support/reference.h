@@ -60,9 +60,10 @@ std::optional<RefHit> intersectProfile(std::span<const Point2> profile, const Re
 // the half-open rule's, exact, and nudging it off the plane would change the rule, not the ray.
 bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long double nudge, long double size);
 
-// Whether the ray's line passes within `distance` of an apex (a profile point on the axis). Such a
-// ray touches the surface at the apex, or misses it, by a margin the oracle's double root there
-// resolves only up to rounding: the one fragile verdict the test rays meet by design.
+// Whether the ray's line passes within `distance` of an apex (a profile point on the axis ending a
+// non-horizontal segment). Such a ray touches the surface at the apex, or misses it by less than
+// `distance`: a verdict rounding may turn either way (the library's, or the oracle's near-double
+// root), and the one fragile verdict the standard test rays meet by design.
 bool passesNearAnApex(std::span<const Point2> profile, const RefRay& ray, long double distance);
 
 // Distance from the point (x, y, z) to the surface of revolution: the 2-D distance from
