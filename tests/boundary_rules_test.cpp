@@ -168,7 +168,9 @@ ShapeCases frustum() {
   ShapeCases s{"frustum r = 1 - z below z = 0.5, cylinder r = 0.5 above",
                {{0, 0}, {1, 0}, {0.75, 0.25}, {0.5, 0.5}, {0.5, 1}, {0, 1}},
                {}};
-  // Horizontal rays at vertex heights on the cone stretch.
+  // Horizontal rays at vertex heights on the cone stretch: in the plane the kernel takes the vertex's
+  // own radius (0.75, 0.5, 1), and along an axis through the z axis the circle of radius r is met
+  // at |origin| -+ r, divided by the direction's length (a power of two): exact.
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 (cone vertex, r = 0.75) from outside",
                      ray({-4, 0, 0.25}, {1, 0, 0}), Expected{3.25, 2, 0.5f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 from inside",
@@ -208,6 +210,8 @@ ShapeCases frustum() {
 // heights are [0, 1).
 ShapeCases openCone() {
   ShapeCases s{"open cone, apex (0, 0, 1), rim r = 0.5 at z = 0", {{0, 1}, {0.5, 0}}, {}};
+  // In the rim's plane the circle of radius 0.5, met along the x axis at 4 - 0.5, and from the axis
+  // at 0.5.
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 (the rim) from outside",
                      ray({-4, 0, 0}, {1, 0, 0}), Expected{3.5, 0, 0.5f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside", ray({0, 0, 0}, {0, 1, 0}), Expected{0.5, 0, 0.25f}});
