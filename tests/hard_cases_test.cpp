@@ -233,7 +233,8 @@ TEST(HardCasesTest, AxisAlignedRaysAgreeWithTheOracle) {
         // or rim) an axis-aligned ray lands by coincidence only: at most one a profile. At an
         // apex: the rays through the axis aimed at an apex's height pass it within the rounding
         // of their direction, often exactly, where the touch flips under a nudge (and the kernel
-        // misses some exact touches at shallow slopes, see ReferenceAgreementTest).
+        // misses some exact touches at shallow slopes, see ReferenceAgreementTest). Measured: at
+        // most 3 for a search and profile (the sphere's), over 37 seeds.
         EXPECT_LE(found.excusedElsewhere, 1u);
         EXPECT_LE(found.excusedNearApex, 6u);
         if (found.excusedNearApex + found.excusedElsewhere > 0) {
