@@ -5,6 +5,7 @@
 #include "support/test_scale.h"
 #include "support/reference.h"
 #include "support/test_profiles.h"
+#include "support/test_seeds.h"
 
 #include <revolve/revolve.h>
 
@@ -176,11 +177,16 @@ TEST(HardCasesTest, NearlyHorizontalRaysGrazingAnApexStayOnTheSurface) {
 // ---------------------------------------------------------------------------------------------
 // Rays along, through and perpendicular to the axis; horizontal and vertical runs.
 
-// Counts disagreements with the oracle that a 1e-9 nudge of the ray does not explain (the oracle
-// and the library may differ on rays within rounding of an edge or grazing a cap's plane).
-std::size_t unexplainedDisagreements(std::span<const Point2> points, const Shape& shape, const std::vector<Ray>& rays,
-                                     double size) {
-  std::size_t wrong = 0;
+// Disagreements with the oracle. One is excused only where the exact answer is ambiguous at the
+// rounding level: the oracle's own verdict changes under a 1e-9 nudge of the ray (a ray in a
+// vertex's plane is nudged within it: there the half-open rule decides, and is compared). The
+// excused are counted by where they lie, near an apex or elsewhere, for the callers to bound.
+struct Disagreements {
+  std::size_t wrong = 0, excusedNearApex = 0, excusedElsewhere = 0;
+};
+
+Disagreements disagreements(std::span<const Point2> points, const Shape& shape, const std::vector<Ray>& rays, double size) {
+  Disagreements found;
   for (const Ray& ray : rays) {
     const std::optional<Hit> got = intersect(shape, ray);
     const auto expected = reference::intersectProfile(points, toRef(ray));
@@ -189,29 +195,56 @@ std::size_t unexplainedDisagreements(std::span<const Point2> points, const Shape
         (!got || std::abs(got->t - double(expected->t)) * dn <= 0x1p-22 * (std::abs(got->t) * dn + size))) {
       continue;
     }
-    const bool fragile = reference::verdictIsFragile(points, toRef(ray), 1e-9L * size, size);
-    wrong += !fragile;
+    if (!reference::verdictIsFragile(points, toRef(ray), 1e-9L * size, size)) {
+      if (++found.wrong <= 3) {
+        ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
+                      << ", " << ray.direction.y << ", " << ray.direction.z << "): oracle "
+                      << (expected ? std::to_string(double(expected->t)) : "miss") << ", library "
+                      << (got ? std::to_string(got->t) : "miss");
+      }
+    } else if (reference::passesNearAnApex(points, toRef(ray), 1e-9L * size)) {
+      ++found.excusedNearApex;
+    } else {
+      ++found.excusedElsewhere;
+    }
   }
-  return wrong;
+  return found;
 }
 
 TEST(HardCasesTest, AxisAlignedRaysAgreeWithTheOracle) {
-  std::mt19937_64 random(13);
   const std::vector<std::pair<const char*, std::vector<Point2>>> profiles = {
       {"stairs", testing::stairs(10)}, {"cup", testing::cup()}, {"hourglass", testing::hourglass()},
       {"capped cylinder", testing::cappedCylinder(0.5, -0.75, 0.75)}, {"sphere", testing::sphereLike(1.0, 64)},
       {"hollow vase", testing::hollowVase()}};
-  for (const Variant& variant : kVariants) {
-    std::size_t fired = 0, wrong = 0;
-    for (const auto& [name, points] : profiles) {
-      SCOPED_TRACE(std::string(variant.name) + ", " + name);
-      const Shape shape(Profile(points), variant.options);
-      const std::vector<Ray> rays = testing::axisAlignedRays(shape, random, 8000);
-      fired += rays.size();
-      wrong += unexplainedDisagreements(points, shape, rays, norm(shape.bounds().upper));
+  for (const std::uint64_t seed : testing::testSeeds({13})) {
+    SCOPED_TRACE(testing::seedTrace(seed));
+    std::mt19937_64 random(seed);
+    for (const Variant& variant : kVariants) {
+      std::size_t fired = 0, wrong = 0;
+      for (const auto& [name, points] : profiles) {
+        SCOPED_TRACE(std::string(variant.name) + ", " + name);
+        const Shape shape(Profile(points), variant.options);
+        const std::vector<Ray> rays = testing::axisAlignedRays(shape, random, 8000);
+        fired += rays.size();
+        const Disagreements found = disagreements(points, shape, rays, norm(shape.bounds().upper));
+        wrong += found.wrong;
+        // Half of these rays lie in a vertex's plane or aim at a vertex's height on the axis, by
+        // design; the excuses stay few. Elsewhere than at an apex (within 1e-9 of a silhouette
+        // or rim) an axis-aligned ray lands by coincidence only: at most one a profile. At an
+        // apex: the rays through the axis aimed at an apex's height pass it within the rounding
+        // of their direction, often exactly, where the touch flips under a nudge (and the kernel
+        // misses some exact touches at shallow slopes, see ReferenceAgreementTest). Measured: at
+        // most 3 for a search and profile (the sphere's), over 37 seeds.
+        EXPECT_LE(found.excusedElsewhere, 1u);
+        EXPECT_LE(found.excusedNearApex, 6u);
+        if (found.excusedNearApex + found.excusedElsewhere > 0) {
+          std::printf("%s, %s: %zu disagreements excused near an apex, %zu elsewhere\n", variant.name, name,
+                      found.excusedNearApex, found.excusedElsewhere);
+        }
+      }
+      report("rays along, through and perpendicular to the axis", variant.name, fired, wrong);
+      EXPECT_EQ(wrong, 0u);
     }
-    report("rays along, through and perpendicular to the axis", variant.name, fired, wrong);
-    EXPECT_EQ(wrong, 0u);
   }
 }
 

@@ -4,9 +4,10 @@
 //
 // Tolerances. Every bound below comes from an error budget stated in `Budget`: a hit is found in
 // long double (unit roundoff u = 2^-64) as the root of an implicit function F of the point. Random
-// tests use a fixed seed per test (printed on failure); set REVOLVE_REFERENCE_SEED to replay or to
-// explore other seeds.
+// tests use a fixed seed per test (printed on failure); set REVOLVE_TEST_SEED to replay or to
+// explore other seeds (support/test_seeds.h).
 #include "support/reference.h"
+#include "support/test_seeds.h"
 
 #include <gtest/gtest.h>
 
@@ -207,12 +208,9 @@ testing::AssertionResult hitIs(const RefRay& ray, const std::optional<RefHit>& h
 // ---------------------------------------------------------------------------------------------
 // Random rays.
 
-std::uint64_t seedFor(std::uint64_t fallback) {
-  if (const char* text = std::getenv("REVOLVE_REFERENCE_SEED")) return std::strtoull(text, nullptr, 0);
-  return fallback;
-}
+std::uint64_t seedFor(std::uint64_t fallback) { return revolve::testing::testSeeds({fallback}).front(); }
 
-#define TRACE_SEED(seed) SCOPED_TRACE(testing::Message() << "seed " << (seed) << " (replay: REVOLVE_REFERENCE_SEED)")
+#define TRACE_SEED(seed) SCOPED_TRACE(revolve::testing::seedTrace(seed))
 
 class Random {
  public:
@@ -524,6 +522,65 @@ TEST(ReferenceTest, RangeTiesAndInvalidRays) {
   EXPECT_FALSE(intersectProfile(capped, makeRay(o, d, 3, 1)));
   EXPECT_FALSE(intersectSphere(0, 1, makeRay(o, {0, 0, 0})));
   EXPECT_FALSE(intersectTorus(2, 0.5L, makeRay(o, d, nan)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The library's rules for what rounding cannot decide.
+
+TEST(ReferenceTest, HorizontalRaysFollowTheHalfOpenHeightRule) {
+  // A segment owns the heights [zmin, zmax): in the plane of a vertex, the circles of the segments
+  // continuing upwards from it. Along x from (-3, 0, z), the circle of radius 1 is met at t = 2
+  // and t = 4 (the quadratic t^2 - 6t + 8, exact).
+  const std::vector<Point2> capped{{0, 0}, {1, 0}, {1, 2}, {0, 2}};
+  const std::vector<RefHit> bottom = allHits(capped, makeRay({-3, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(bottom.size(), 2u);  // the side's circle; the bottom disc lies in the plane
+  EXPECT_EQ(bottom[0].t, 2);
+  EXPECT_EQ(bottom[0].segment, 1u);
+  EXPECT_EQ(bottom[1].t, 4);
+  EXPECT_TRUE(allHits(capped, makeRay({-3, 0, 2}, {1, 0, 0})).empty());  // the top rim: nothing above
+
+  // The side split at z = 1: the segment above the vertex owns its height, the one below does not.
+  const std::vector<Point2> split{{0, 0}, {1, 0}, {1, 1}, {1, 2}, {0, 2}};
+  const std::vector<RefHit> middle = allHits(split, makeRay({-3, 0, 1}, {1, 0, 0}));
+  ASSERT_EQ(middle.size(), 2u);
+  EXPECT_EQ(middle[0].segment, 2u);
+  EXPECT_EQ(middle[1].segment, 2u);
+
+  // A vertex where the profile turns from down to up belongs to both segments; one where it turns
+  // from up to down, to neither.
+  const std::vector<RefHit> valley = allHits(std::vector<Point2>{{2, 1}, {1, 0}, {2, 2}}, makeRay({-3, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(valley.size(), 4u);
+  EXPECT_EQ(valley[0].t, 2);
+  EXPECT_EQ(valley[1].t, 2);
+  EXPECT_TRUE(allHits(std::vector<Point2>{{1, 0}, {2, 1}, {1.5, 0}}, makeRay({-3, 0, 1}, {1, 0, 0})).empty());
+}
+
+TEST(ReferenceTest, RaysThroughAnApexTouchIt) {
+  // The open cone from the apex (0, 0, 1) down to radius 0.5 at z = 0: its only segment meets the
+  // axis at the apex.
+  const std::vector<Point2> cone{{0, 1}, {0.5, 0}};
+  // In the apex's plane: through the axis, a touch at t = 3; off it, nothing (the segment's
+  // circle there has radius 0).
+  const std::optional<RefHit> level = intersectProfile(cone, makeRay({-3, 0, 1}, {1, 0, 0}));
+  ASSERT_TRUE(level.has_value());
+  EXPECT_EQ(level->t, 3);
+  EXPECT_FALSE(intersectProfile(cone, makeRay({-3, 0.25L, 1}, {1, 0, 0})));
+  // Obliquely through the apex from outside: (-2, 0, 1.5) + t (2, 0, -0.5) passes it at t = 1, and
+  // below it stays outside the cone (rho = 2 (t - 1) against the radius 0.25 (t - 1)).
+  const std::optional<RefHit> oblique = intersectProfile(cone, makeRay({-2, 0, 1.5L}, {2, 0, -0.5L}));
+  ASSERT_TRUE(oblique.has_value());
+  EXPECT_EQ(oblique->t, 1);
+  // Along the axis from below: into the cone's inside, out through the apex.
+  const std::optional<RefHit> axis = intersectProfile(cone, makeRay({0, 0, -1}, {0, 0, 2}));
+  ASSERT_TRUE(axis.has_value());
+  EXPECT_EQ(axis->t, 1);
+  // The hourglass's pinch joins two cones: the touch is listed for both, the lower index first.
+  const std::vector<Point2> hourglass{{0, -1}, {0.8L, -1}, {0, 0}, {0.8L, 1}, {0, 1}};
+  const std::vector<RefHit> pinch = allHits(hourglass, makeRay({-3, 0, 0}, {1, 0, 0}));
+  ASSERT_EQ(pinch.size(), 2u);
+  EXPECT_EQ(pinch[0].t, 3);
+  EXPECT_EQ(pinch[0].segment, 1u);
+  EXPECT_EQ(pinch[1].segment, 2u);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 // (__int128, or a small big-integer sum for arbitrary doubles), symmetry and scaling laws, and
 // geometry reasoned out by hand.
 #include "profile/self_intersection.h"
+#include "support/test_seeds.h"
 
 #include <gtest/gtest.h>
 
@@ -631,15 +632,14 @@ std::vector<IntPoint> randomPolyline(std::mt19937_64& random) {
 }
 
 TEST(SelfIntersectionTest, MatchesBruteForceOnRandomGridPolylines) {
-  std::uint64_t seed = 424242;
-  if (const char* text = std::getenv("REVOLVE_TEST_SEED")) seed = std::strtoull(text, nullptr, 10);
+  const std::uint64_t seed = revolve::testing::testSeeds({424242}).front();
   std::mt19937_64 random(seed);
   static constexpr std::array<int, 4> kExponents = {0, -1064, 1000, -30};  // exact scalings
   int intersecting = 0;
   int clean = 0;
   int closedClean = 0;
   for (int trial = 0; trial < 50000; ++trial) {
-    SCOPED_TRACE("seed " + std::to_string(seed) + " trial " + std::to_string(trial));
+    SCOPED_TRACE(revolve::testing::seedTrace(seed) + ", trial " + std::to_string(trial));
     const std::vector<IntPoint> integer = randomPolyline(random);
     const int rExponent = kExponents[random() % kExponents.size()];
     const int zExponent = kExponents[random() % kExponents.size()];

@@ -5,6 +5,7 @@
 #include "io/text_files.h"
 
 #include "scratch_directory.h"
+#include "support/test_seeds.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -565,39 +566,39 @@ TEST(HitsCsv, NumbersHaveNineSignificantDigits) {
 TEST(HitsCsv, NineDigitsReadBackToTheSameFloat) {
   // FLT_DECIMAL_DIG = 9: any float printed with 9 significant digits reads back exactly. Checked
   // on random finite bit patterns, across all exponents.
-  std::uint64_t seed = std::random_device{}();
-  if (const char* text = std::getenv("REVOLVE_TEST_SEED")) seed = std::strtoull(text, nullptr, 10);
-  SCOPED_TRACE("seed " + std::to_string(seed) + " (rerun with REVOLVE_TEST_SEED=" + std::to_string(seed) + ")");
-  std::mt19937_64 random(seed);
-  std::vector<float> values;
-  while (values.size() < 6 * 2000) {
-    const float value = std::bit_cast<float>(static_cast<std::uint32_t>(random()));
-    if (std::isfinite(value)) values.push_back(value);
-  }
-  std::vector<std::optional<Hit>> hits;
-  for (std::size_t i = 0; i < values.size(); i += 6) {
-    hits.push_back(hitWith(values[i], {values[i + 1], values[i + 2], values[i + 3]}, values[i + 4], values[i + 5]));
-  }
-  const ScratchDirectory directory;
-  writeHitsCsv(directory / "h.csv", hits);
-  std::istringstream in(readWholeFile(directory / "h.csv"));
-  std::string line;
-  std::getline(in, line);
-  std::size_t next = 0;
-  while (std::getline(in, line)) {
-    ASSERT_TRUE(line.starts_with("1,")) << line;
-    std::istringstream fields(line.substr(2));
-    for (std::string field; std::getline(fields, field, ',');) {
-      ASSERT_LT(next, values.size());
-      float read = 0;
-      const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), read);
-      ASSERT_TRUE(error == std::errc() && end == field.data() + field.size()) << field;
-      EXPECT_EQ(std::bit_cast<std::uint32_t>(read), std::bit_cast<std::uint32_t>(values[next]))
-          << field << " was written for " << values[next];
-      ++next;
+  for (const std::uint64_t seed : revolve::testing::testSeeds({1, 2})) {
+    SCOPED_TRACE(revolve::testing::seedTrace(seed));
+    std::mt19937_64 random(seed);
+    std::vector<float> values;
+    while (values.size() < 6 * 2000) {
+      const float value = std::bit_cast<float>(static_cast<std::uint32_t>(random()));
+      if (std::isfinite(value)) values.push_back(value);
     }
+    std::vector<std::optional<Hit>> hits;
+    for (std::size_t i = 0; i < values.size(); i += 6) {
+      hits.push_back(hitWith(values[i], {values[i + 1], values[i + 2], values[i + 3]}, values[i + 4], values[i + 5]));
+    }
+    const ScratchDirectory directory;
+    writeHitsCsv(directory / "h.csv", hits);
+    std::istringstream in(readWholeFile(directory / "h.csv"));
+    std::string line;
+    std::getline(in, line);
+    std::size_t next = 0;
+    while (std::getline(in, line)) {
+      ASSERT_TRUE(line.starts_with("1,")) << line;
+      std::istringstream fields(line.substr(2));
+      for (std::string field; std::getline(fields, field, ',');) {
+        ASSERT_LT(next, values.size());
+        float read = 0;
+        const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), read);
+        ASSERT_TRUE(error == std::errc() && end == field.data() + field.size()) << field;
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(read), std::bit_cast<std::uint32_t>(values[next]))
+            << field << " was written for " << values[next];
+        ++next;
+      }
+    }
+    EXPECT_EQ(next, values.size());
   }
-  EXPECT_EQ(next, values.size());
 }
 
 }  // namespace

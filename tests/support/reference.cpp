@@ -99,6 +99,18 @@ void appendPlaneHits(const Segment& s, const RefRay& ray, std::vector<RefHit>& h
   hits.push_back(makeHit(t, rotateMeridianNormal(s.normalR, s.normalZ, p.x, p.y), s.index));
 }
 
+// Whether the ray's line passes through the point (0, 0, z), and the t of its closest approach.
+// Decided up to the long-double rounding of that distance: each coordinate of `across` is formed
+// by a handful of roundings of terms no larger than |offset| (|t d| <= |offset|), under 12 u
+// |offset| each, so a line through the point is found within 32 u |offset|.
+bool linePassesThrough(const RefRay& ray, Real z, Real& t) {
+  const Vec d = direction(ray);
+  const Vec offset{-ray.ox, -ray.oy, z - ray.oz};
+  t = dot(offset, d) / dot(d, d);
+  const Vec across = offset - t * d;
+  return length(across) <= 32 * kUnitRoundoff * length(offset);
+}
+
 // Non-horizontal segment: the cone x^2 + y^2 = (r0 + (z - z0) * slope)^2, slope = dr / dz
 // (slope 0 is the cylinder). Substituting the ray, the radius is a0 + a1 t, and
 //   (dx^2 + dy^2 - a1^2) t^2 + 2 (ox dx + oy dy - a0 a1) t + (ox^2 + oy^2 - a0^2) = 0.
@@ -106,15 +118,36 @@ void appendPlaneHits(const Segment& s, const RefRay& ray, std::vector<RefHit>& h
 // root counts only if its z lies in the segment's closed z range and its radius is >= 0. (The
 // radius, linear in z and >= 0 at both ends, is >= 0 over the whole range, so the z test alone
 // already rejects the mirror nappe; the radius test states the intent and costs nothing.)
+//
+// Two rules of the library's (revolve.h, README's Hard cases) decide what rounding cannot:
+// - The apex rule: a line through the apex of a segment reaching the axis meets the double cone
+//   there only, a double root that rounding of the coefficients would keep or lose at random.
+//   Such a ray touches the surface at the apex: a hit, whatever its plane. (A line along a
+//   generator, all of whose points are roots, is reported at the apex alone.)
+// - The half-open height rule for a ray in a horizontal plane (dz = 0): the segment owns the
+//   heights [zMin, zMax), so at a vertex's height the ray meets the circles of the segments that
+//   continue upwards from it, the cross-section just above the plane (at a top rim, nothing).
 void appendConeHits(const Segment& s, const RefRay& ray, std::vector<RefHit>& hits) {
+  for (const auto& [r, z] : {std::pair{s.r0, s.z0}, std::pair{s.r1, s.z1}}) {
+    Real t;
+    if (r == 0 && linePassesThrough(ray, z, t)) {
+      if (inRange(ray, t)) hits.push_back(makeHit(t, rotateMeridianNormal(s.normalR, s.normalZ, 0, 0), s.index));
+      return;
+    }
+  }
+  const Real zMin = std::min(s.z0, s.z1);
+  const Real zMax = std::max(s.z0, s.z1);
+  if (ray.dz == 0) {
+    if (!(zMin <= ray.oz && ray.oz < zMax)) return;
+    // In an apex's plane, off the apex: the circle of radius 0 is not met.
+    if ((ray.oz == s.z0 && s.r0 == 0) || (ray.oz == s.z1 && s.r1 == 0)) return;
+  }
   const Real slope = (s.r1 - s.r0) / (s.z1 - s.z0);
   const Real a0 = s.r0 + (ray.oz - s.z0) * slope;  // cone radius at the origin's height
   const Real a1 = ray.dz * slope;                  // its rate of change along the ray
   const QuadraticRoots roots =
       solveQuadratic(ray.dx * ray.dx + ray.dy * ray.dy - a1 * a1, 2 * (ray.ox * ray.dx + ray.oy * ray.dy - a0 * a1),
                      ray.ox * ray.ox + ray.oy * ray.oy - a0 * a0);
-  const Real zMin = std::min(s.z0, s.z1);
-  const Real zMax = std::max(s.z0, s.z1);
   for (int i = 0; i < roots.count; ++i) {
     const Real t = roots.value[i];
     if (!inRange(ray, t)) continue;
@@ -460,14 +493,13 @@ std::optional<RefHit> intersectTorus(long double majorRadius, long double minorR
 }
 
 bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long double nudge, long double size) {
-  if (ray.dz == 0) {
-    for (const Point2& p : profile) {
-      if (ray.oz == p.z) return true;
-    }
-  }
+  // A ray in a vertex's horizontal plane is nudged within the plane: there the half-open rule, not
+  // rounding, decides its answer, and off the plane another rule applies.
+  bool inVertexPlane = false;
+  for (const Point2& p : profile) inVertexPlane |= ray.dz == 0 && ray.oz == p.z;
   const std::optional<RefHit> hit = intersectProfile(profile, ray);
   const long double speed = std::sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
-  for (int axis = 0; axis < 3; ++axis) {
+  for (int axis = 0; axis < (inVertexPlane ? 2 : 3); ++axis) {
     for (long double sign : {-1.0L, 1.0L}) {
       RefRay moved = ray;
       (axis == 0 ? moved.ox : axis == 1 ? moved.oy : moved.oz) += sign * nudge;
@@ -476,6 +508,21 @@ bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long d
       // A nudge that moves the nearest hit to another part of the surface (a seam, or a nearer
       // surface appearing) makes the distance fragile too.
       if (other && hit && std::abs(other->t - hit->t) * speed > 1e-6L * size) return true;
+    }
+  }
+  return false;
+}
+
+bool passesNearAnApex(std::span<const Point2> profile, const RefRay& ray, long double distance) {
+  const Vec d = direction(ray);
+  for (std::size_t i = 0; i + 1 < profile.size(); ++i) {
+    if (profile[i].z == profile[i + 1].z) continue;  // a disc's centre is no apex
+    for (const Point2& p : {profile[i], profile[i + 1]}) {
+      if (p.r != 0) continue;
+      // The apex's offset from the origin, less its projection on the line.
+      const Vec offset = Vec{0, 0, p.z} - origin(ray);
+      const Vec across = offset - (dot(offset, d) / dot(d, d)) * d;
+      if (length(across) <= distance) return true;
     }
   }
   return false;

@@ -41,16 +41,30 @@ struct RefHit {
 // t then by segment. A hit on a point shared by two segments is listed once for each of them; a
 // tangent (double) root is listed once. Not reported: a ray lying inside a horizontal segment's
 // plane, or inside a segment's surface (infinitely many roots).
+//
+// Two rules of the library's decide what rounding cannot: the apex rule (a ray whose line passes
+// through an apex, a profile point on the axis, touches the surface there: a hit for each
+// non-horizontal segment meeting the apex), and for a ray in a horizontal plane (dz = 0) the
+// half-open height rule (a segment owns the heights [zmin, zmax), so at a vertex's height the ray
+// meets the circles of the segments continuing upwards from it, and at a top rim nothing).
 std::vector<RefHit> allHits(std::span<const Point2> profile, const RefRay& ray);
 
 // Nearest hit with tnear <= t <= tfar; ties go to the lower segment index.
 std::optional<RefHit> intersectProfile(std::span<const Point2> profile, const RefRay& ray);
 
 // Whether the oracle's answer for `ray` is fragile, so that a library answer differing from it is
-// within rounding rather than wrong: the ray lies in a vertex's horizontal plane (where the oracle's
-// closed z ranges report the tangent circles of local z extrema), or nudging its origin by
-// `nudge` along any axis changes the oracle's verdict or moves its hit by more than 1e-6 * size.
+// within rounding rather than wrong: nudging its origin by `nudge` along an axis changes the
+// oracle's verdict or moves its hit by more than 1e-6 * size. Such a ray passes within `nudge` of
+// a silhouette, a rim or an apex, where either answer is the exact one for a ray within rounding
+// of it. A ray in a vertex's horizontal plane is nudged only along x and y: its answer there is
+// the half-open rule's, exact, and nudging it off the plane would change the rule, not the ray.
 bool verdictIsFragile(std::span<const Point2> profile, const RefRay& ray, long double nudge, long double size);
+
+// Whether the ray's line passes within `distance` of an apex (a profile point on the axis ending a
+// non-horizontal segment). Such a ray touches the surface at the apex, or misses it by less than
+// `distance`: a verdict rounding may turn either way (the library's, or the oracle's near-double
+// root), and the one fragile verdict the standard test rays meet by design.
+bool passesNearAnApex(std::span<const Point2> profile, const RefRay& ray, long double distance);
 
 // Distance from the point (x, y, z) to the surface of revolution: the 2-D distance from
 // (sqrt(x^2 + y^2), z) to the profile polyline.
