@@ -4,9 +4,11 @@
 // - the half-open height rule: a ray in a horizontal plane sees the circles of the segments that
 //   continue upwards from its height, so at a vertex's height it meets the vertex circle of the
 //   segment above (and at a top rim, nothing);
-// - tnear <= t <= tfar is inclusive: an oblique ray whose hit lies exactly at tfar or tnear hits;
+// - tnear <= t <= tfar is inclusive: a ray whose hit lies exactly at tfar or tnear hits, whether it
+//   enters or leaves the solid there;
 // - a tangent touch (a double root, discriminant exactly 0) is a hit;
-// - u lies in [0, 1): a hit just below the +x axis, whose exact u rounds to 1, reports u = 0.
+// - u lies in [0, 1): a hit just below the +x axis, whose exact u rounds to 1, reports u = 0;
+// - a ray through an apex touches it, however nearly level with the apex it runs.
 // Profiles and rays use small dyadic numbers (radii 1, 0.75, 0.5; heights multiples of 1/8;
 // directions along the axes, or with the hit placed where the kernel's arithmetic is exact, as each
 // case says), so that each expected t is a float met exactly: a rule changed at its boundary then
@@ -53,7 +55,7 @@ struct Expected {
   float u;
 };
 
-enum class Rule { halfOpenHeight, inclusiveRange, tangentTouch, uWrap };
+enum class Rule { halfOpenHeight, inclusiveRange, tangentTouch, uWrap, apexTouch };
 
 struct Case {
   Rule rule;
@@ -96,6 +98,14 @@ ShapeCases splitCylinder() {
                      ray({0, 0, 0}, {0, 0.5, 0}, 1), Expected{2, 1, 0.25f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss",
                      ray({-4, 0, 1}, {1, 0, 0}), std::nullopt});
+  // Leaving the solid exactly at tfar and at tnear, in a horizontal plane: from the axis the wall is
+  // met at t = 1, and from the wall itself at t = 0.
+  s.cases.push_back({Rule::inclusiveRange, "horizontal from the axis, leaving the wall at t = tfar",
+                     ray({0, 0, 0.25}, {1, 0, 0}, 0, 1), Expected{1, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "horizontal from the wall outwards, leaving it at t = tnear = 0",
+                     ray({1, 0, 0.25}, {1, 0, 0}), Expected{0, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "horizontal from the axis, tfar one float short of the wall",
+                     ray({0, 0, 0.25}, {1, 0, 0}, 0, std::nextafter(1.0f, 0.0f)), std::nullopt});
   // Tangent to the wall in a horizontal plane: the line y = 1 touches the circle of radius 1 at
   // (0, 1), t = 4; the kernel's quadratic there is x^2 + (1 - 1), whose discriminant is exactly 0.
   s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.25",
@@ -200,6 +210,15 @@ ShapeCases frustum() {
                      ray(above, {0, 0, -0.5}, 0, 3.75), Expected{3.75, 1, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "vertical, tfar = 3.5 before the hit at 3.75 (|d| = 0.5)",
                      ray(above, {0, 0, -0.5}, 0, 3.5), std::nullopt});
+  // Rising from inside (r = 0.875 < 1 - 0.0625), the ray leaves the cone where 1 - z = 0.875,
+  // z = 0.125, t = 0.0625 / 4, as exactly as it enters it above; and from that very point upwards it
+  // leaves at t = tnear = 0.
+  s.cases.push_back({Rule::inclusiveRange, "vertical, leaving the cone at t = tfar (|d| = 4)",
+                     ray({0.875, 0, 0.0625}, {0, 0, 4}, 0, 0.015625), Expected{0.015625, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, leaving the cone at t = tnear = 0",
+                     ray({0.875, 0, 0.125}, {0, 0, 4}), Expected{0, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, tfar one float short of leaving the cone",
+                     ray({0.875, 0, 0.0625}, {0, 0, 4}, 0, std::nextafter(0.015625f, 0.0f)), std::nullopt});
   // Starting past the cone, the ray next meets the bottom disc at z = 0, t = 4.
   s.cases.push_back({Rule::inclusiveRange, "vertical, tnear = 3.875 past the hit at 3.75 (|d| = 0.5)",
                      ray(above, {0, 0, -0.5}, 3.875), Expected{4, 0, 0.0f}});
@@ -223,6 +242,18 @@ ShapeCases openCone() {
                      ray({-4, -0.25, 0.5}, {1, 0, 0}), Expected{4, 0, 0.75f}});
   s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the rim",
                      ray({-4, std::nextafter(0.5f, 1.0f), 0}, {1, 0, 0}), std::nullopt});
+  // Nearly level rays through the apex: origin + direction is exactly (0, 0, 1) (the x and y
+  // components cancel, and the z components sum to 1 exactly), so the line passes through the
+  // apex at t = 1, rising about 1/200, 1/1000 and 1/16000 of its length. Both its sides lie outside the
+  // cone (above the apex it is in the mirror nappe's region): only the apex-touch rule reports it.
+  // The azimuth of a hit on the axis is arbitrary: u is not checked.
+  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 200",
+                     ray({0x1.75725cp-3f, 0x1.fe1e5cp+0f, 0x1.fce6ecp-1f}, {-0x1.75725cp-3f, -0x1.fe1e5cp+0f, 0x1.8c8ap-8f}),
+                     Expected{1, 0, 0.0f}});
+  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 1,024",
+                     ray({2, 0, 1 - 0x1p-9f}, {-2, 0, 0x1p-9f}), Expected{1, 0, 0.0f}});
+  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 16,384",
+                     ray({0, 2, 1 - 0x1p-13f}, {0, -2, 0x1p-13f}), Expected{1, 0, 0.0f}});
   return s;
 }
 
@@ -243,7 +274,7 @@ void expectHit(const Case& c, const std::string& path, bool found, float t, std:
   if (!found) return;
   EXPECT_EQ(t, c.hit->t);
   EXPECT_EQ(segment, c.hit->segment);
-  EXPECT_EQ(u, c.hit->u);
+  if (c.rule != Rule::apexTouch) EXPECT_EQ(u, c.hit->u);
 }
 
 void expectOccluded(const Case& c, const std::string& path, bool occluded) {
@@ -379,6 +410,8 @@ TEST(BoundaryRulesTest, ObliqueRaysHitExactlyAtTfarAndTnear) { checkRule(Rule::i
 TEST(BoundaryRulesTest, TangentRaysTouchTheWallAndTheRim) { checkRule(Rule::tangentTouch); }
 
 TEST(BoundaryRulesTest, HitsJustBelowThePlusXAxisReportUZero) { checkRule(Rule::uWrap); }
+
+TEST(BoundaryRulesTest, NearlyLevelRaysThroughAnApexTouchIt) { checkRule(Rule::apexTouch); }
 
 // ---------------------------------------------------------------------------------------------
 // u at the wrap, on the attribute code directly: the scalar azimuthFraction (intersect,

@@ -25,7 +25,9 @@ unset REVOLVE_TEST_SEED
 # name | file | fragment | replacement
 plants=(
   "half-open height rule: a vertex height belongs to no segment|plugin/src/kernel/segment_hits.h|zMin <= ray.oz|zMin < ray.oz"
-  "tfar exclusive on oblique rays|plugin/src/kernel/segment_hits.h|insideConeAt(ray, x1, p0, er, ez, true)|insideConeAt(ray, x1, p0, er, ez, false)"
+  "tfar exclusive: a far end exactly on the surface is no hit|plugin/src/kernel/bracketed_roots.h|  if (on.at1) inside1 = !(eInside ? insideE : inside0);|"
+  "tnear exclusive: a near end exactly on the surface is no hit|plugin/src/kernel/bracketed_roots.h|  if (on.at0) inside0 = !(eInside ? insideE : inside1);|"
+  "apex touch clamped to the bracket as computed|plugin/src/kernel/segment_hits.h|std::max(sLow - widen, lo), std::min(sHigh + widen, hi)|sLow, sHigh"
   "a tangent touch (discriminant 0) misses|plugin/src/kernel/bracketed_roots.h|D >= 0.0 : D < 0.0|D > 0.0 : D < 0.0"
   "packet u not wrapped below 1|plugin/src/util/azimuth.h|  for (int lane = 0; lane < kLanes; ++lane) u[lane] = u[lane] < 1.0f ? u[lane] : 0.0f;|"
   "single-ray set-up: tfar not scaled by the direction's length|plugin/src/kernel/meridian_ray.h|std::min((double(ray.tfar) - tCentre) * length, w)|std::min(double(ray.tfar) - tCentre, w)"

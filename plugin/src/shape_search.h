@@ -41,10 +41,10 @@ inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double
   }
 }
 
-template <bool kCount>
+template <bool kCount, bool kFirstOnly = false>
 inline SegmentHits hitsOfSegment(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
                                  Stats& stats) noexcept {
-  const SegmentHits hits = segmentHits(ray, shape.local[k], shape.local[k + 1], ray.lo, hi);
+  const SegmentHits hits = segmentHits<kFirstOnly>(ray, shape.local[k], shape.local[k + 1], ray.lo, hi);
   if constexpr (kCount) stats.quadratics += hits.solved;
   return hits;
 }
@@ -62,7 +62,7 @@ struct NearestHit {
   static constexpr std::uint32_t kNoSegment = 0xffffffffu;
 
   bool operator()(std::uint32_t k) noexcept {
-    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, leafHi, stats);
+    const SegmentHits hits = hitsOfSegment<kCount, true>(shape, ray, k, leafHi, stats);
     if (hits.count > 0 && (hits.s[0] < s || (hits.s[0] == s && k < segment))) {
       s = hits.s[0];
       segment = k;
@@ -82,7 +82,7 @@ struct AnyHit {
   bool found = false;
 
   bool operator()(std::uint32_t k) noexcept {
-    found = hitsOfSegment<kCount>(shape, ray, k, ray.hi, stats).count > 0;
+    found = hitsOfSegment<kCount, true>(shape, ray, k, ray.hi, stats).count > 0;
     return found;
   }
 };

@@ -236,6 +236,33 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
   }
 }
 
+// rtcIntersect1's case, without a filter: N = 1, where Embree's packet is exactly an RTCRayHit, so
+// the fields are read and written directly rather than through the N-wide accessors.
+template <bool kCount>
+inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, Stats& stats) noexcept {
+  RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
+  const Ray ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
+                {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z},
+                rayHit.ray.tnear,
+                rayHit.ray.tfar};
+  MeridianRay meridian;
+  if (!setUpMeridianRay(shape.frame, ray, meridian)) return;
+  double hi = meridian.hi;
+  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  searchShape<kCount>(shape, meridian, hi, nearest, stats);
+  if (!nearest.found()) return;
+  const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+  rayHit.ray.tfar = hit.t;
+  rayHit.hit.Ng_x = hit.normal.x;
+  rayHit.hit.Ng_y = hit.normal.y;
+  rayHit.hit.Ng_z = hit.normal.z;
+  rayHit.hit.u = hit.u;
+  rayHit.hit.v = hit.v;
+  rayHit.hit.primID = hit.segment;  // the profile segment, as documented in revolve.h
+  rayHit.hit.geomID = args->geomID;
+  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) rayHit.hit.instID[level] = args->context->instID[level];
+}
+
 template <bool kCount>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
@@ -246,8 +273,12 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
     if (args->valid[0] == -1) {
       if constexpr (kCount) ++stats.rays;
       MeridianRay meridian;
-      if (setUpMeridianRay(shape.frame, laneRay(RTCRayHitN_RayN(args->rayhit, 1), 1, 0), meridian)) {
-        intersectLane<kCount>(args, shape, filtered, meridian, 0, stats);
+      if (filtered) {
+        if (setUpMeridianRay(shape.frame, laneRay(RTCRayHitN_RayN(args->rayhit, 1), 1, 0), meridian)) {
+          intersectLane<kCount>(args, shape, true, meridian, 0, stats);
+        }
+      } else {
+        intersectOne<kCount>(args, shape, stats);
       }
     }
   } else {

@@ -45,27 +45,35 @@ namespace segment_hits_internal {
 // nearest the apex lies within lineSlack (the line's distance from the caller's float ray) plus
 // this test's own rounding (4 u R) of the apex. Only called when the brackets found no root: a ray
 // that enters the cone through its apex has its root there already.
-inline void addApexTouch(const MeridianRay& ray, double zApex, double sLow, double sHigh, SegmentHits& hits) noexcept {
+//
+// Where the bracket ends at the apex's plane, that end is where this double-precision line crosses
+// the plane, which is not where the caller's ray crosses it: moving the line sideways by the
+// tolerance moves the crossing along it by up to tolerance / |dz|, plus the crossing's own
+// rounding (8 u |zApex - oz| |1 / dz|). The bracket is widened by that much (within [lo, hi]), or a
+// ray nearly level with the apex, passing through it exactly, would be clamped to a point of the
+// line up to tolerance / |dz| from the apex and missed (half of such rays rising 1 in 1,000 were).
+// The widening stays far inside the searches' own margins on slab entries (2^-21 R |1 / dz| in
+// the float filter), so a touch still lies after the entry of every tree node holding the
+// segment, as their pruning assumes.
+inline void addApexTouch(const MeridianRay& ray, double zApex, double sLow, double sHigh, double lo, double hi,
+                         SegmentHits& hits) noexcept {
   const double ax = -ray.ox, ay = -ray.oy, az = zApex - ray.oz;  // apex - origin
-  // The closest approach, clamped into the bracket: within the segment's slab, so the touch lies
-  // after the entry of every tree node holding the segment, as the searches' pruning assumes.
-  const double s = std::clamp(ax * ray.dx + ay * ray.dy + az * ray.dz, sLow, sHigh);
-  const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s) - zApex;
   const double tolerance = ray.lineSlack + 4.0 * kUnitRoundoff * (std::abs(ax) + std::abs(ay) + std::abs(az));
+  const double widen = (tolerance + 8.0 * kUnitRoundoff * std::abs(az)) * std::abs(ray.invDz);
+  const double s = std::clamp(ax * ray.dx + ay * ray.dy + az * ray.dz, std::max(sLow - widen, lo), std::min(sHigh + widen, hi));
+  const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s) - zApex;
   if (px * px + py * py + pz * pz <= tolerance * tolerance) hits.s[hits.count++] = s;
 }
 
-// Inside (rho < cone radius) at s, for an interval end that is not a vertex plane: tnear, tfar or
-// the exit from the bounding sphere. Evaluated as the sign of ez * (rho - radius), whose error stays
-// proportional to the segment's length however flat the segment is. `onCounts`: a point exactly on
-// the surface counts as inside, used at the far end so that a root exactly at tfar is a hit
-// (tnear <= t <= tfar is inclusive at both ends; at the near end a root exactly at tnear is found
-// as the entry of the inside it leads to).
-inline bool insideConeAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez, bool onCounts) noexcept {
+// Where the ray is at s against the cone, for an interval end that is not a vertex plane: tnear,
+// tfar or the exit from the bounding sphere. Evaluated as the sign of ez * (rho - radius), whose
+// error stays proportional to the segment's length however flat the segment is. Positive outside,
+// negative inside, zero exactly on the surface: such an end is a hit itself (tnear <= t <= tfar is
+// inclusive at both ends), which bracketedRoots reports whichever way the ray crosses there.
+inline double outwardAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez) noexcept {
   const double rho = std::sqrt(ray.rho2At(s));
   const double L = p0.r * ez + (ray.zAt(s) - p0.z) * er;
-  const double outward = ez > 0.0 ? ez * rho - L : L - ez * rho;  // > 0 outside the cone
-  return onCounts ? outward <= 0.0 : outward < 0.0;
+  return ez > 0.0 ? ez * rho - L : L - ez * rho;
 }
 
 // Whether g (expanded about m) vanishes within its rounding: a ray along a generator of the cone
@@ -88,7 +96,9 @@ inline bool alongSurface(const MeridianRay& ray, const Quadratic& g, double m, P
 
 }  // namespace segment_hits_internal
 
-// All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order.
+// All hits of the ray with segment p0 -> p1 (local frame) with lo <= s <= hi, in increasing order;
+// with kFirstOnly only the first of them (the same value: only the second root's work is skipped).
+template <bool kFirstOnly = false>
 inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, double lo, double hi) noexcept {
   using namespace segment_hits_internal;
   SegmentHits hits;
@@ -114,8 +124,13 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
     bracketHigh = std::min(sLeave, hi);
     if (bracketLow <= bracketHigh) {
       const double x0 = bracketLow, x1 = bracketHigh;
-      const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : insideConeAt(ray, x0, p0, er, ez, false);
-      const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : insideConeAt(ray, x1, p0, er, ez, true);
+      // The end signs: at a vertex plane the predicate the neighbouring segment shares, elsewhere
+      // the cone's own sign, with exactly-on-the-surface kept apart.
+      const double outward0 = sEnter >= lo ? 1.0 : outwardAt(ray, x0, p0, er, ez);
+      const double outward1 = sLeave <= hi ? 1.0 : outwardAt(ray, x1, p0, er, ez);
+      const bool inside0 = sEnter >= lo ? ray.rho2At(sEnter) < rEnter * rEnter : outward0 < 0.0;
+      const bool inside1 = sLeave <= hi ? ray.rho2At(sLeave) < rLeave * rLeave : outward1 < 0.0;
+      const EndsOnSurface on{outward0 == 0.0, outward1 == 0.0};
       // Expand g about the middle m of [x0, x1]: g(m + x) = A x^2 + 2 B x + C.
       const auto expandAbout = [&](double m) {
         const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
@@ -141,10 +156,10 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
         // Every point of [x0, x1] lies on the surface within rounding: the first is the hit, and
         // the last too when the end signs agree, so that the parity they dictate holds.
         hits.s[hits.count++] = x0;
-        if (inside0 == inside1 && x1 > x0) hits.s[hits.count++] = x1;
+        if (!kFirstOnly && inside0 == inside1 && x1 > x0) hits.s[hits.count++] = x1;
         return hits;
       }
-      const Roots roots = bracketedRoots(g, x0 - m, x1 - m, inside0, inside1);
+      const Roots roots = bracketedRoots<kFirstOnly>(g, x0 - m, x1 - m, inside0, inside1, on);
       // Clamped again after adding m back, which rounds: a root must not leave its segment's stretch.
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(m + roots.x[i], x0, x1);
     }
@@ -160,16 +175,17 @@ inline SegmentHits segmentHits(const MeridianRay& ray, Point2 p0, Point2 p1, dou
       const double R2 = radius * radius;
       // a * (rho^2 - radius^2) about the closest approach to the axis: a^2 x^2 + cross^2 - a radius^2.
       const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
-      const Roots roots =
-          bracketedRoots(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
+      const double rho2Lo = ray.rho2At(lo), rho2Hi = ray.rho2At(hi);
+      const Roots roots = bracketedRoots<kFirstOnly>(g, lo - ray.sAxis, hi - ray.sAxis, rho2Lo < R2, rho2Hi < R2,
+                                                     EndsOnSurface{rho2Lo == R2, rho2Hi == R2});
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count++] = std::clamp(ray.sAxis + roots.x[i], lo, hi);
       hits.solved = true;
     }
   }
 
   if (ez != 0.0 && hits.count == 0 && bracketLow <= bracketHigh) {
-    if (p0.r == 0.0) addApexTouch(ray, p0.z, bracketLow, bracketHigh, hits);
-    if (p1.r == 0.0 && hits.count == 0) addApexTouch(ray, p1.z, bracketLow, bracketHigh, hits);
+    if (p0.r == 0.0) addApexTouch(ray, p0.z, bracketLow, bracketHigh, lo, hi, hits);
+    if (p1.r == 0.0 && hits.count == 0) addApexTouch(ray, p1.z, bracketLow, bracketHigh, lo, hi, hits);
   }
   return hits;
 }

@@ -97,14 +97,40 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
     const FloatLanes hiLanes = splatFloat(floatHi(hi));
     float entries[64 + kFloatLanes];
     std::uint64_t candidates = 0;
-    for (std::uint32_t c = 0; c < tree.flatSegments; c += kFloatLanes) {
-      FloatLanes entry;
-      const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[c]), load(&tree.segmentZHigh[c]),
-                                     load(&tree.segmentLow2[c]), load(&tree.segmentHigh2[c]), entry);
-      store(&entries[c], entry);
-      candidates |= std::uint64_t(met) << c;
+    if (tree.flatSegments <= WideTree::kRunScan) {
+      for (std::uint32_t c = 0; c < tree.flatSegments; c += kFloatLanes) {
+        FloatLanes entry;
+        const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[c]), load(&tree.segmentZHigh[c]),
+                                       load(&tree.segmentLow2[c]), load(&tree.segmentHigh2[c]), entry);
+        store(&entries[c], entry);
+        candidates |= std::uint64_t(met) << c;
+      }
+      if constexpr (kCount) stats.shellTests += tree.flatSegments;
+    } else {
+      // The runs' unions first, then the segments of the runs the ray meets: a ray meets few of
+      // them (2.6 of the 8 runs of a 64-point vase, on average over the benchmark's rays).
+      constexpr std::uint32_t kRuns = WideTree::kFlatSegments / WideTree::kRunSegments;
+      static_assert(kRuns <= 8 && WideTree::kRunSegments % kFloatLanes == 0);
+      unsigned runs = 0;
+      for (std::uint32_t c = 0; c < kRuns; c += kFloatLanes) {
+        FloatLanes entry;
+        runs |= shellsMet(shellRay, hiLanes, load(&tree.runZLow[c]), load(&tree.runZHigh[c]), load(&tree.runLow2[c]),
+                          load(&tree.runHigh2[c]), entry)
+                << c;
+      }
+      if constexpr (kCount) stats.shellTests += kRuns + WideTree::kRunSegments * unsigned(__builtin_popcount(runs));
+      for (; runs != 0; runs &= runs - 1) {
+        const std::uint32_t first = std::uint32_t(__builtin_ctz(runs)) * WideTree::kRunSegments;
+        for (std::uint32_t c = first; c < first + WideTree::kRunSegments; c += kFloatLanes) {
+          FloatLanes entry;
+          const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[c]), load(&tree.segmentZHigh[c]),
+                                         load(&tree.segmentLow2[c]), load(&tree.segmentHigh2[c]), entry);
+          store(&entries[c], entry);
+          candidates |= std::uint64_t(met) << c;
+        }
+      }
     }
-    if constexpr (kCount) stats.shellTests += tree.flatSegments, ++stats.nodesVisited;
+    if constexpr (kCount) ++stats.nodesVisited;
     candidates &= (std::uint64_t{2} << (tree.flatSegments - 1)) - 1;
     Entry sorted[64];
     int count = 0;

@@ -94,6 +94,7 @@ std::size_t WideTree::memoryBytes() const noexcept {
          (segmentZLow.capacity() + segmentZHigh.capacity() + segmentLow2.capacity() + segmentHigh2.capacity() +
           childZLow.capacity() + childZHigh.capacity() + childLow2.capacity() + childHigh2.capacity()) *
              sizeof(float) +
+         (runZLow.capacity() + runZHigh.capacity() + runLow2.capacity() + runHigh2.capacity()) * sizeof(float) +
          childRef.capacity() * sizeof(std::uint32_t);
 }
 
@@ -119,6 +120,19 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
   tree.segmentHigh2.insert(tree.segmentHigh2.end(), WideTree::kPadding, -kInfinity);
 
   if (segments <= WideTree::kFlatSegments) tree.flatSegments = std::uint32_t(segments);
+  if (segments <= WideTree::kFlatSegments && segments > WideTree::kRunScan) {
+    for (std::size_t first = 0; first < segments; first += WideTree::kRunSegments) {
+      float zLow = kInfinity, zHigh = -kInfinity, low2 = kInfinity, high2 = -kInfinity;
+      for (std::size_t k = first; k < std::min<std::size_t>(segments, first + WideTree::kRunSegments); ++k) {
+        zLow = std::min(zLow, tree.segmentZLow[k]), zHigh = std::max(zHigh, tree.segmentZHigh[k]);
+        low2 = std::min(low2, tree.segmentLow2[k]), high2 = std::max(high2, tree.segmentHigh2[k]);
+      }
+      tree.runZLow.push_back(zLow), tree.runZHigh.push_back(zHigh), tree.runLow2.push_back(low2), tree.runHigh2.push_back(high2);
+    }
+    const std::size_t runs = WideTree::kFlatSegments / WideTree::kRunSegments;
+    tree.runZLow.resize(runs, 0.0f), tree.runZHigh.resize(runs, 0.0f);
+    tree.runLow2.resize(runs, kInfinity), tree.runHigh2.resize(runs, -kInfinity);
+  }
   Builder builder(points, margin, tree);
   for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
   builder.group();

@@ -60,6 +60,11 @@ struct WideTree {
   // Profiles of at most kFlatSegments segments are scanned whole, without the tree: their count.
   static constexpr std::uint32_t kFlatSegments = 64;
   std::uint32_t flatSegments = 0;
+  // A scanned profile of more than kRunScan segments also has the union of each run of
+  // kRunSegments segments' shells, then empty ones up to kFlatSegments / kRunSegments: a ray tests
+  // these first, then only the segments of the runs whose union it meets.
+  static constexpr std::uint32_t kRunScan = 32, kRunSegments = 8;
+  std::vector<float> runZLow, runZHigh, runLow2, runHigh2;
 
   bool empty() const noexcept { return leaves.empty(); }
   std::size_t memoryBytes() const noexcept;
