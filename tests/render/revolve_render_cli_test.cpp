@@ -106,7 +106,7 @@ TEST(RevolveRenderCliTest, MissingSceneFileIsOneLine) {
   const Result result = runRender(dir.path(), {"absent.json", "-o", "out.png"});
   EXPECT_EQ(result.status, 1);
   EXPECT_EQ(lineCount(result.err), 1u) << result.err;
-  EXPECT_THAT(result.err, HasSubstr("absent.json:0: cannot open"));
+  EXPECT_THAT(result.err, HasSubstr("absent.json: cannot open"));
   EXPECT_TRUE(dir.entries().empty());
 }
 
