@@ -56,8 +56,10 @@ InputError::InputError(std::string_view file, std::size_t line, const std::strin
 
 std::string byteCount(std::uint64_t bytes) {
   char text[48];
-  if (bytes >= (std::uint64_t{1} << 20) && bytes % (std::uint64_t{1} << 20) == 0) {
-    std::snprintf(text, sizeof text, "%llu MiB", static_cast<unsigned long long>(bytes >> 20));
+  if (bytes >= (std::uint64_t{1} << 20) && bytes < (std::uint64_t{1} << 30) && bytes % (std::uint64_t{1} << 20) == 0) {
+    std::snprintf(text, sizeof text, "%llu MiB", static_cast<unsigned long long>(bytes >> 20));  // the limits
+  } else if (bytes >= 1000000000000) {
+    std::snprintf(text, sizeof text, "%.3g TB", double(bytes) * 1e-12);
   } else if (bytes >= 1000000000) {
     std::snprintf(text, sizeof text, "%.3g GB", double(bytes) * 1e-9);
   } else if (bytes >= 1000000) {

@@ -206,7 +206,8 @@ void OutputSet::add(std::string_view option, const std::string& path) {
   output->path = path;
   output->identity = identify(path);
   for (const Input& input : inputs_) {
-    if (sameFile(output->identity, identify(input.path))) {
+    const Identity inputIdentity = identify(input.path);
+    if (inputIdentity.exists && sameFile(output->identity, inputIdentity)) {
       throw std::runtime_error(path + ": " + named(option) + " names the same file as " + input.what +
                                " (an input); an output may not overwrite an input");
     }

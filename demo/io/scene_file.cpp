@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
 #include <optional>
@@ -304,8 +305,9 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     object.transform = readTransform(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
     if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform); !(reach <= app::kMaxWorldCoordinate)) {
-      in.fail(path, "the placed object reaches " + numberText(reach) +
-                        ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", reach);  // computed: three digits say it
+      in.fail(path, std::string("the placed object reaches ") + text + ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
     }
     scene.objects.push_back(std::move(object));
   }
