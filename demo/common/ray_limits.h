@@ -37,7 +37,15 @@ inline constexpr double kMaxRayOrigin = 4 * kMaxWorldCoordinate;
 // keeps the float matrix and its determinant (Embree inverts it in float) finite.
 inline constexpr double kMinScale = 0x1p-16;
 inline constexpr double kMaxScale = 0x1p40;
+
+// An object's scale factors lie within a factor 2^16 of each other. A secondary ray leaving a hit
+// on an instance starts off the surface by the error of Embree's float transform, gamma(4) |L|
+// |L^-1| (|o| + |T| + |t d|) (scene/embree_scene.h); with |L| |L^-1| <= 3 * 2^16 and that sum at
+// most 4.5 * 2^40 (an origin within 1.25 * 2^40, a translation, the way to a hit on geometry within
+// 2^40), the offset stays under 0.21 * 2^40, so rays leaving hits start within 1.25 * 2^40 again.
+inline constexpr double kMaxScaleRatio = 0x1p16;
 static_assert(1.7320508075688772 / kMinScale * (kMaxRayOrigin + kMaxWorldCoordinate) <= 0.5 * double(kEmbreeLargest));
 static_assert(kMaxScale * kMaxScale * kMaxScale * 6 < 3.4e38);  // a float determinant of 3 x 3 entries below 2^40 stays finite
+static_assert(4 * 0x1p-24 / (1 - 4 * 0x1p-24) * 3 * kMaxScaleRatio * 4.5 <= 0.25);
 
 }  // namespace revolve::app

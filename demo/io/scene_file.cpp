@@ -195,6 +195,14 @@ SceneTransform readTransform(const Reader& in, const Json& json, const std::stri
     } else {
       in.fail(scalePath, "expected a number or [sx, sy, sz]");
     }
+    const auto [smallest, largest] = std::minmax({transform.scale[0], transform.scale[1], transform.scale[2]});
+    if (largest > app::kMaxScaleRatio * smallest) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", largest / smallest);
+      in.fail(scalePath, std::string("the scale factors differ by a factor ") + text +
+                             ": they lie within a factor 2^16 (65536) of each other, so that Embree's float transform "
+                             "keeps rays leaving the object within range");
+    }
   }
   return transform;
 }

@@ -184,9 +184,11 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     // What the reader's limits on scales guarantee (common/ray_limits.h), checked here too for
     // descriptions made in code: Embree's object-space rays stay within its range.
     if (!(inv.infinityNorm() * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
-        !(instance.linear.infinityNorm() <= 3 * app::kMaxScale)) {
+        !(instance.linear.infinityNorm() <= 3 * app::kMaxScale) ||
+        !(instance.linear.infinityNorm() * inv.infinityNorm() <= 3 * app::kMaxScaleRatio * (1 + 0x1p-20))) {
       throw std::runtime_error(description.file + ": objects[" + std::to_string(i) +
-                               "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40]");
+                               "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40], "
+                               "within a factor 2^16 of each other");
     }
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) instance.normalMatrix.m[r][c] = inv.m[c][r];

@@ -89,6 +89,8 @@ inline std::vector<BadCase> badCases() {
        "objects[1].translate[1]: 2e+12 is beyond the coordinate limit"},
       {"TinyScale", replaced(kScene, R"("scale": 0.5)", R"("scale": [1e-20, 1, 1])"), {},
        "scene.json: objects[1].scale[0]: 1e-20 is out of range: scale factors lie in [2^-16, 2^40]", kBottleCsv, true},
+      {"ScalesTooUnequal", replaced(kScene, R"("scale": 0.5)", R"("scale": [100, 100, 1e-3])"), {},
+       "objects[1].scale: the scale factors differ by a factor 1e+05: they lie within a factor 2^16 (65536) of each other"},
       {"HugeScale", replaced(kScene, R"("scale": 0.5)", R"("scale": 1e13)"), {}, "objects[1].scale: 1e+13 is out of range: scale factors lie in"},
       // Within the scale range, but the bottle (1 tall, turned 10 degrees) then reaches 1.13e12.
       {"ObjectReachesBeyondTheLimit", replaced(kScene, R"("scale": 0.5)", R"("scale": 1.09e12)"), {},
