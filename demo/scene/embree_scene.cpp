@@ -236,7 +236,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     rtcReleaseGeometry(triangles);
   }
   rtcCommitScene(top_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error(description.file + ": Embree failed to build the scene");
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

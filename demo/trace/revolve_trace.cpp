@@ -132,7 +132,7 @@ void run(const Options& options) {
     rtcAttachGeometry(scene.get(), geometry->handle());
   }
   rtcCommitScene(scene.get());
-  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error(options.profile + ": Embree failed to build the scene");
   const std::vector<std::optional<Hit>> hits = traceAll(scene.get(), rays, profile, mesh, options.slices);
   io::writeHitsCsv(outputs.stream(options.out), hits);
   outputs.commit();

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -164,13 +165,18 @@ TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
   dir.write("sensor.json", kSpinningSensor);
   long peak[2] = {0, 0};
   const int poses[2] = {4, 40};
+  // Under AddressSanitizer, freed blocks wait in a quarantine (they would count as growth): off.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  const std::string asanOptions = "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
   for (int i = 0; i < 2; ++i) {
     dir.write("poses.csv", testing::manyPoses(poses[i]));
-    const ProcessResult run =
-        runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--pcd-data", "binary"},
-                   ProcessOptions{dir.path().string(), {}, -1}, 60);
+    const ProcessResult run = runProcess(REVOLVE_PEAK_MEMORY_PATH,
+                                         {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o",
+                                          "scan.pcd", "--pcd-data", "binary"},
+                                         ProcessOptions{dir.path().string(), {asanOptions}, -1}, 60);
     ASSERT_EQ(run.status, 0) << run.err;
-    peak[i] = run.maxResidentKb;
+    peak[i] = std::stol(readWholeFile(dir / "peak.txt"));
+    std::filesystem::remove(dir / "peak.txt");
     const std::string cloud = readWholeFile(dir / "scan.pcd");
     const std::size_t data = cloud.find("DATA binary\n");
     ASSERT_NE(data, std::string::npos);
@@ -178,6 +184,7 @@ TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
   }
   const long tableKb = 36L * 28800 * 20 / 1024;
   EXPECT_LT(peak[1] - peak[0], tableKb / 4) << "peaks " << peak[0] << " KB and " << peak[1] << " KB";
+  EXPECT_GT(peak[0], 1000) << "a peak was measured";
 }
 
 }  // namespace
