@@ -328,6 +328,33 @@ TEST(Outputs, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
   expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("fifo.csv"), "fifo.csv: -o names a FIFO (named pipe), not a regular file");
 }
 
+// revolve-render's refusals, in one test (each process loads OpenImageIO, half a second): the
+// issue's far camera and tiny scale, option errors, empty values, outputs that are inputs.
+TEST(Options, RevolveRenderRefusesInOneLineWithStatusOne) {
+  const ScratchDirectory dir;
+  const std::string scene = replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "pole.csv"})");
+  dir.write("scene.json", scene);
+  dir.write("pole.csv", "r,z\n0,0\n0.25,0\n0.25,2\n0,2\n");
+  dir.write("far.json", replacedIn(scene, R"("from": [-3, 0, 1])", R"("from": [1e20, 0, 1])"));
+  dir.write("tiny.json", replacedIn(scene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "scale": [1e-20, 1, 1])"));
+  dir.write("old.png", "an existing image");
+  const auto refused = [&](const std::vector<std::string>& args, const std::string& expected) {
+    SCOPED_TRACE(args.front() + " ...");
+    expectRefusal(kRender, "revolve-render", dir, args, expected);
+  };
+  refused({"far.json", "-o", "old.png"}, "far.json: camera.from[0]: 1e+20 is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+  refused({"tiny.json", "-o", "old.png"}, "tiny.json: objects[0].scale[0]: 1e-20 is out of range: scale factors lie in [2^-16, 2^40]");
+  refused({"scene.json", "-o", "old.png", "--spp", "0"}, "revolve-render: --spp: 0 is out of range: it must lie in [1, 1048576] (see --help)");
+  refused({"scene.json", "-o", "old.png", "--width", "64.0000001"}, "--width: 64.0000001 is not a whole number (see --help)");
+  refused({"scene.json", "-o", ""}, "--output: the value is empty; a file name is needed (see --help)");
+  refused({"scene.json", "-o", "old.png", "--stats", ""}, "--stats: the value is empty");
+  refused({"scene.json", "--pick", ""}, "--pick: the value is empty");
+  refused({"scene.json", "-o", "old.png", "--stats", "scene.json"},
+          "scene.json: --stats names the same file as the scene file (an input); an output may not overwrite an input");
+  refused({"scene.json", "-o", "old.png", "--stats", "./pole.csv"}, "./pole.csv: --stats names the same file as a profile CSV of the scene");
+  refused({"scene.json", "-o", "old.png", "--stats", "old.png"}, "old.png: --stats names the same file as -o (old.png); each output needs a file of its own");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Degenerate scenes: valid, but an object shows nothing; one warning per object, and the run goes on.
 
