@@ -22,19 +22,21 @@ inline bool embreeAccepts(const Ray& ray) noexcept {
 }
 
 // Positions given in scene, sensor and poses files (the camera, lights, quad corners, translations,
-// the extent of every placed object, robot poses, sensor mountings) lie within +-2^40 (about
-// 1.1e12) scene units. Every ray the tools trace then starts within kMaxRayOrigin: at a given
-// position, at a hit on the scene's geometry, or at a sensor mounted on a robot pose (|p + Rz m|
-// <= (1 + sqrt 2) 2^40); directions are unit, or (towards a point light) within 2 * 2^40 + a hit's.
+// the reach of every placed object, robot poses, sensor mountings) lie within +-2^40 (about 1.1e12)
+// scene units. Every ray the tools trace then starts within kMaxRayOrigin = 4 * 2^40: at a given
+// position, off a hit on the scene's geometry (within 1.25 * 2^40, see kMaxScaleRatio), or at a
+// sensor mounted on a robot pose (|p + Rz m| <= (1 + sqrt 2) 2^40); its direction is unit or, to a
+// point light, within 2.25 * 2^40.
 inline constexpr double kMaxWorldCoordinate = 0x1p40;
 inline constexpr double kMaxRayOrigin = 4 * kMaxWorldCoordinate;
 
 // The scale factors of a placed object lie in [2^-16, 2^40]. Embree maps a world ray into the
 // object by L^-1 = S^-1 R^T, whose rows have 1-norm at most sqrt 3 / s: from an origin within
-// kMaxRayOrigin of an object translated by at most 2^40, the object-space origin stays within
-// sqrt 3 2^16 (5 2^40) = 2^59.1, and a direction within 2^16 sqrt 3 (2^42), both under half of
-// FLT_LARGE (2^59.7), the other half left for Embree's float rounding of the transform. Above, 2^40
-// keeps the float matrix and its determinant (Embree inverts it in float) finite.
+// kMaxRayOrigin of an object translated by at most 2^40 (|o - T| <= 5 * 2^40), the object-space
+// origin stays within sqrt 3 * 2^16 * 5 * 2^40 = 2^59.1 and a direction within sqrt 3 * 2^16 *
+// 2.25 * 2^40 = 2^58, both under half of FLT_LARGE (2^60.7), the other half left for Embree's float
+// rounding of the transform. Above, 2^40 keeps the float matrix and its determinant (Embree inverts
+// it in float) finite.
 inline constexpr double kMinScale = 0x1p-16;
 inline constexpr double kMaxScale = 0x1p40;
 

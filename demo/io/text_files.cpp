@@ -3,17 +3,10 @@
 #include "io/csv_fields.h"
 
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <type_traits>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace revolve::io {
 namespace {
