@@ -184,7 +184,7 @@ void printTables(std::FILE* out, const RunResults& results) {
   for (const ShapeResult& shape : results.scaling) printScaling(out, shape);
 }
 
-void writeJson(const std::string& path, const RunResults& results, const std::string& commandLine) {
+void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results, const std::string& commandLine) {
   json speedError = json::array(), scaling = json::array();
   for (const ShapeResult& shape : results.speedError) speedError.push_back(shapeJson(shape));
   for (const ShapeResult& shape : results.scaling) scaling.push_back(shapeJson(shape));
@@ -205,12 +205,10 @@ void writeJson(const std::string& path, const RunResults& results, const std::st
       {"speed_error", speedError},
       {"scaling", scaling}};
   const std::string text = document.dump(1) + "\n";
-  io::writeFileAtomically(path, [&](std::FILE* file) {
-    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw std::runtime_error("short write");
-  });
+  outputs.stream(path).write(text);
 }
 
-void writeCsv(const std::string& path, const RunResults& results) {
+void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults& results) {
   std::ostringstream csv;
   csv << "suite,shape,method,points,slices,mode,mrays_median,mrays_low,mrays_high,residual_max,residual_p99,"
          "residual_rms,normal_p99_degrees,disagreement_fraction,revolve_bytes,embree_bytes,build_seconds\n";
@@ -235,9 +233,7 @@ void writeCsv(const std::string& path, const RunResults& results) {
   rows("speed_error", results.speedError);
   rows("scaling", results.scaling);
   const std::string text = csv.str();
-  io::writeFileAtomically(path, [&](std::FILE* file) {
-    if (std::fwrite(text.data(), 1, text.size(), file) != text.size()) throw std::runtime_error("short write");
-  });
+  outputs.stream(path).write(text);
 }
 
 }  // namespace revolve::bench

@@ -3,6 +3,8 @@
 
 #include "results.h"
 
+#include "io/output_set.h"
+
 #include <cstdio>
 #include <string>
 
@@ -10,8 +12,9 @@ namespace revolve::bench {
 
 void printTables(std::FILE* out, const RunResults& results);
 
-// Written through a temporary file renamed into place: an output is whole or absent.
-void writeJson(const std::string& path, const RunResults& results, const std::string& commandLine);
-void writeCsv(const std::string& path, const RunResults& results);
+// Written into the outputs' temporaries (io/output_set.h), committed together by the caller: an
+// output is whole or absent.
+void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results, const std::string& commandLine);
+void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults& results);
 
 }  // namespace revolve::bench

@@ -12,7 +12,9 @@
 #include "report.h"
 #include "suites.h"
 
+#include "../demo/common/command_line.h"
 #include "../demo/common/embree_handles.h"
+#include "../demo/common/memory_check.h"
 
 #include <CLI/CLI.hpp>
 
@@ -22,60 +24,67 @@
 
 int main(int argc, char** argv) {
   using namespace revolve::bench;
-  CLI::App app{"revolve-bench: MIBIT against Embree-tessellated meshes and the paper's baselines, speed against error"};
-  app.fallthrough();
+  namespace app = revolve::app;
+  CLI::App cli{"revolve-bench: MIBIT against Embree-tessellated meshes and the paper's baselines, speed against error"};
+  cli.fallthrough();
   RunSettings settings;
   std::string jsonPath, csvPath, camera;
   std::vector<std::string> shapes;
-  app.add_flag("--quick", settings.quick, "small ladders, few rays, one repetition: a smoke test (under a minute)");
-  app.add_option("--json", jsonPath, "write every figure as JSON");
-  app.add_option("--csv", csvPath, "write every figure as CSV, one row per method, resolution and timing mode");
-  app.add_option("--rays", settings.incoherentRays, "incoherent rays per shape")->check(CLI::Range(8, 100000000));
-  app.add_option("--camera", camera, "camera rays, WIDTHxHEIGHT (width a multiple of 4, height of 2)");
-  app.add_option("--repetitions", settings.repetitions, "timed repetitions of each measurement (median reported)")
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--min-time", settings.minSeconds, "seconds each repetition runs at least")->check(CLI::Range(0.0001, 100.0));
-  app.add_option("--seed", settings.seed, "seed of the incoherent rays");
-  CLI::App* speedError = app.add_subcommand("speed-error", "every method on the test shapes: speed, error, memory");
+  cli.add_flag("--quick", settings.quick, "small ladders, few rays, one repetition: a smoke test (under a minute)");
+  cli.add_option("--json", jsonPath, "write every figure as JSON")->check(app::kNonEmpty);
+  cli.add_option("--csv", csvPath, "write every figure as CSV, one row per method, resolution and timing mode")->check(app::kNonEmpty);
+  cli.add_option("--rays", settings.incoherentRays, "incoherent rays per shape")->check(app::wholeNumberIn<std::size_t>(8, 100000000));
+  cli.add_option("--camera", camera, "camera rays, WIDTHxHEIGHT (width a multiple of 4, height of 2)");
+  cli.add_option("--repetitions", settings.repetitions, "timed repetitions of each measurement (median reported)")
+      ->check(app::wholeNumberIn(1, 1000));
+  cli.add_option("--min-time", settings.minSeconds, "seconds each repetition runs at least")->check(CLI::Range(0.0001, 100.0));
+  cli.add_option("--seed", settings.seed, "seed of the incoherent rays")->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX));
+  CLI::App* speedError = cli.add_subcommand("speed-error", "every method on the test shapes: speed, error, memory");
   speedError->add_option("--shapes", shapes, "only these shapes (sphere, torus, vase, goblet, bottle)")
       ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
-  CLI::App* scaling = app.add_subcommand("scaling", "throughput against profile points, 16 to 32,768, on the vase");
-  app.require_subcommand(0, 1);
-  CLI11_PARSE(app, argc, argv);
+  CLI::App* scaling = cli.add_subcommand("scaling", "throughput against profile points, 16 to 32,768, on the vase");
+  cli.require_subcommand(0, 1);
+  if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-bench")) return *status;
 
   if (settings.quick) {
-    if (app.count("--rays") == 0) settings.incoherentRays = 4000;
-    if (app.count("--repetitions") == 0) settings.repetitions = 1;
-    if (app.count("--min-time") == 0) settings.minSeconds = 0.002;
+    if (cli.count("--rays") == 0) settings.incoherentRays = 4000;
+    if (cli.count("--repetitions") == 0) settings.repetitions = 1;
+    if (cli.count("--min-time") == 0) settings.minSeconds = 0.002;
     settings.cameraWidth = settings.cameraHeight = 64;
-  }
-  if (!camera.empty()) {
-    char x = 0;
-    std::istringstream text(camera);
-    if (!(text >> settings.cameraWidth >> x >> settings.cameraHeight) || x != 'x' || !text.eof() ||
-        settings.cameraWidth <= 0 || settings.cameraWidth % 4 != 0 || settings.cameraHeight <= 0 ||
-        settings.cameraHeight % 2 != 0) {
-      std::fprintf(stderr, "--camera %s: expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2\n",
-                   camera.c_str());
-      return 2;
-    }
   }
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
+  const std::string subject = "the benchmark's " + std::to_string(settings.incoherentRays) + " rays (--rays)" +
+                              (camera.empty() ? std::string() : " and --camera " + camera);
 
-  try {
+  return app::runTool("revolve-bench", subject, [&] {
+    if (!camera.empty()) {
+      char x = 0;
+      std::istringstream text(camera);
+      if (!(text >> settings.cameraWidth >> x >> settings.cameraHeight) || x != 'x' || !text.eof() || settings.cameraWidth <= 0 ||
+          settings.cameraWidth % 4 != 0 || settings.cameraHeight <= 0 || settings.cameraHeight % 2 != 0) {
+        throw std::runtime_error("--camera " + camera + ": expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2");
+      }
+    }
+    // Each shape holds its incoherent and camera rays with their reference hits, packets and
+    // errors: 200 bytes a ray, measured (peak resident memory of `speed-error --shapes sphere
+    // --quick` with --camera 1024x1024 less that with 256x256, 196 MB, over the 983,040 rays between).
+    constexpr double kBytesPerRay = 200;
+    const double rays = double(settings.incoherentRays) + double(settings.cameraWidth) * double(settings.cameraHeight);
+    app::requireMemory(rays * kBytesPerRay, subject);
+    revolve::io::OutputSet outputs;
+    if (!jsonPath.empty()) outputs.add("--json", jsonPath);
+    if (!csvPath.empty()) outputs.add("--csv", csvPath);
+
     const revolve::app::Device device = revolve::app::newDevice();
     RunResults results;
     results.settings = settings;
-    const bool all = app.get_subcommands().empty();
+    const bool all = cli.get_subcommands().empty();
     if (all || speedError->parsed()) results.speedError = runSpeedError(device.get(), settings, shapes);
     if (all || scaling->parsed()) results.scaling = runScaling(device.get(), settings);
     printTables(stdout, results);
-    if (!jsonPath.empty()) writeJson(jsonPath, results, commandLine);
-    if (!csvPath.empty()) writeCsv(csvPath, results);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "revolve-bench: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+    if (!jsonPath.empty()) writeJson(outputs, jsonPath, results, commandLine);
+    if (!csvPath.empty()) writeCsv(outputs, csvPath, results);
+    outputs.commit();
+  });
 }

@@ -1,7 +1,9 @@
 // revolve-clearance: the clearance of a vertical-cylinder robot (seed 001's collision test) at each
 // pose of POSES.csv among a scene file's obstacles: exact for upright surfaces of revolution, a
 // lower bound where said (README.md, "Robot range-finding").
+#include "common/command_line.h"
 #include "io/clearance_file.h"
+#include "io/output_set.h"
 #include "io/csv_fields.h"
 #include "io/poses_file.h"
 #include "io/scene_file.h"
@@ -9,6 +11,7 @@
 #include "robot/clearance_map.h"
 #include "robot/picking.h"
 #include "robot/robot_argument.h"
+#include "scene/degenerate_objects.h"
 
 #include <CLI/CLI.hpp>
 #include <tbb/parallel_for.h>
@@ -48,8 +51,15 @@ void run(const Options& options) {
   for (const io::SceneProfile& profile : description.profiles) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-clearance: warning: %s\n", warning.c_str());
   }
+  for (const std::string& warning : scene::degenerateObjectWarnings(description, false)) {
+    std::fprintf(stderr, "revolve-clearance: warning: %s\n", warning.c_str());
+  }
   const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
-  io::checkWritable(options.output);
+  io::OutputSet outputs;
+  outputs.addInput("the scene file", options.scene);
+  for (const io::SceneProfile& profile : description.profiles) outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  outputs.addInput("the poses file (--poses)", options.poses);
+  outputs.add("-o", options.output);
 
   const robot::ClearanceMap map(description, ground);
   std::vector<robot::SceneClearance> results(poses.size());
@@ -70,7 +80,8 @@ void run(const Options& options) {
     bounds += r.object >= 0 && !r.exact ? 1 : 0;
     if (r.clearance < results[least].clearance) least = i;
   }
-  io::writeClearanceCsv(options.output, rows);
+  io::writeClearanceCsv(outputs.stream(options.output), rows);
+  outputs.commit();
   const robot::SceneClearance& worst = results[least];
   std::printf("revolve-clearance: %zu poses, %zu collide; least clearance %.6g at pose %zu", poses.size(), collisions,
               worst.clearance, least);
@@ -88,22 +99,16 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"The clearance of a vertical-cylinder robot to the obstacles of a scene of surfaces of revolution and quads, "
                "at each pose: signed distance, collision flag, nearest obstacle and its point."};
-  app.add_option("scene", options.scene, "scene file (JSON, revolve-render's format)")->required();
+  app.add_option("scene", options.scene, "scene file (JSON, revolve-render's format)")->required()->check(app::kNonEmpty);
   app.add_option("--robot", options.robot, "RADIUS,ZMIN,ZMAX: the robot's radius and the heights of its ends above each pose's z")
       ->required();
-  app.add_option("--poses", options.poses, "robot poses (CSV, header x,y,z,yaw or x,y,yaw)")->required();
-  app.add_option("-o,--output", options.output, "clearance table to write (.csv)")->required();
+  app.add_option("--poses", options.poses, "robot poses (CSV, header x,y,z,yaw or x,y,yaw)")->required()->check(app::kNonEmpty);
+  app.add_option("-o,--output", options.output, "clearance table to write (.csv)")->required()->check(app::kNonEmpty);
   app.add_option("--ground", options.ground,
-                 "height of the ground the robot drives on: surfaces wholly at or below it are not obstacles (default: none)");
-  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
-  // Argument errors too are one line, like every other error of the tool.
-  app.failure_message([](const CLI::App*, const CLI::Error& error) { return std::string("revolve-clearance: ") + error.what() + " (see --help)\n"; });
-  CLI11_PARSE(app, argc, argv);
-  try {
-    run(options);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "revolve-clearance: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+                 "height of the ground the robot drives on: surfaces wholly at or below it are not obstacles (default: none)")
+      ->check(CLI::Validator([](std::string& value) { return value.empty() ? std::string("the value is empty; expected a height") : std::string(); },
+                             "Z"));
+  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
+  if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-clearance")) return *status;
+  return app::runTool("revolve-clearance", options.scene, [&] { run(options); });
 }

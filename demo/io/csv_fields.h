@@ -2,6 +2,8 @@
 // quoting for messages. Internal to demo/io.
 #pragma once
 
+#include "io/input_file.h"
+
 #include <charconv>
 #include <cstdlib>
 #include <optional>
@@ -11,6 +13,32 @@
 #include <vector>
 
 namespace revolve::io::csv {
+
+// The lines of a file's text, split at '\n' and numbered from 1; a line longer than
+// kMaxCsvLineBytes is an InputError naming its number, before anything splits it.
+class Lines {
+ public:
+  Lines(std::string_view text, std::string_view file) : text_(text), file_(file) {}
+
+  // The next line without its '\n', or nullopt after the last.
+  std::optional<std::string_view> next() {
+    if (text_.empty()) return std::nullopt;
+    const std::size_t newline = text_.find('\n');
+    const std::string_view line = text_.substr(0, newline);
+    text_ = newline == std::string_view::npos ? std::string_view{} : text_.substr(newline + 1);
+    ++number_;
+    if (line.size() > kMaxCsvLineBytes) {
+      throw InputError(file_, number_, "the line is " + std::to_string(line.size()) + " bytes long; a line of these files holds at most " +
+                                           std::to_string(kMaxCsvLineBytes));
+    }
+    return line;
+  }
+  std::size_t number() const { return number_; }
+
+ private:
+  std::string_view text_, file_;
+  std::size_t number_ = 0;
+};
 
 inline std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

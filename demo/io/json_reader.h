@@ -7,8 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/ray_limits.h"
+#include "common/unit_vector.h"
+
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -55,12 +59,20 @@ inline std::string joined(std::initializer_list<std::string_view> names) {
   return out;
 }
 
-// A number as the file most likely wrote it (%g: up to 6 significant digits).
+// A number as the file wrote it, as nearly as a parsed number can say: the shortest text that
+// reads back to the same double (64.0000001 stays 64.0000001, never "64").
 inline std::string numberText(double value) {
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 }
+// A JSON number's text: whole numbers (which nlohmann keeps as integers) exactly.
+inline std::string numberText(const Json& value) {
+  if (value.is_number_unsigned()) return std::to_string(value.get<std::uint64_t>());
+  if (value.is_number_integer()) return std::to_string(value.get<std::int64_t>());
+  return numberText(value.get<double>());
+}
+
+using app::unitVector;
 
 // Typed access to the JSON tree with key paths for messages.
 template <class Error>
@@ -105,14 +117,14 @@ class Reader {
   }
   double numberIn(const Json& value, const std::string& path, double lo, double hi, const char* rule) const {
     const double x = number(value, path);
-    if (!(x >= lo && x <= hi)) fail(path, numberText(x) + " is out of range: " + rule);
+    if (!(x >= lo && x <= hi)) fail(path, numberText(value) + " is out of range: " + rule);
     return x;
   }
   int integerIn(const Json& value, const std::string& path, int lo, int hi) const {
     const double x = number(value, path);
-    if (x != std::floor(x)) fail(path, numberText(x) + " is not a whole number");
+    if (x != std::floor(x)) fail(path, numberText(value) + " is not a whole number");
     if (!(x >= lo && x <= hi)) {
-      fail(path, numberText(x) + " is out of range: must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      fail(path, numberText(value) + " is out of range: must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     }
     return int(x);
   }
@@ -120,7 +132,7 @@ class Reader {
   std::uint64_t unsignedInteger(const Json& value, const std::string& path) const {
     if (value.is_number_unsigned()) return value.get<std::uint64_t>();
     if (value.is_number_integer()) fail(path, std::to_string(value.get<std::int64_t>()) + " is negative: expected a whole number >= 0");
-    if (value.is_number()) fail(path, numberText(value.get<double>()) + " is not a whole number in [0, 2^64)");
+    if (value.is_number()) fail(path, numberText(value) + " is not a whole number in [0, 2^64)");
     fail(path, std::string("expected a whole number, found ") + value.type_name());
   }
   std::string string(const Json& value, const std::string& path) const {
@@ -131,6 +143,22 @@ class Reader {
     if (!value.is_array() || value.size() != 3) fail(path, "expected an array of 3 numbers [x, y, z]");
     return {number(value[0], element(path, 0)), number(value[1], element(path, 1)), number(value[2], element(path, 2))};
   }
+  // A position in the world: each coordinate within +-kMaxWorldCoordinate (common/ray_limits.h).
+  std::array<double, 3> position(const Json& value, const std::string& path) const {
+    const std::array<double, 3> p = vec3(value, path);
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (std::abs(p[i]) > app::kMaxWorldCoordinate) {
+        fail(element(path, i), numberText(value[i]) + " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      }
+    }
+    return p;
+  }
+  // A direction: any finite vector but zero, returned as a unit vector (unitVector).
+  std::array<double, 3> direction(const Json& value, const std::string& path) const {
+    const std::array<double, 3> v = vec3(value, path);
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) fail(path, "the vector is zero; a direction is needed");
+    return unitVector(v);
+  }
 
   const std::string& file() const { return file_; }
 
@@ -139,20 +167,50 @@ class Reader {
 };
 
 // Parses `text`; invalid JSON and a key repeated within one object (nlohmann would keep the last
-// silently; a repeat is more likely a mistake) are errors through `in`.
+// silently; a repeat is more likely a mistake) are errors through `in`, the repeat named by its
+// key path (`camera.fov`, `objects[3].scale`).
 template <class Error>
 Json parse(std::string_view text, const Reader<Error>& in) {
-  std::vector<std::set<std::string>> keysOfOpenObjects;
+  // The containers open at the parser's position: each one's key path, its keys so far (objects)
+  // or elements so far (arrays), and the key whose value comes next.
+  struct Open {
+    std::string path;
+    bool array = false;
+    std::size_t elements = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Open> open;
+  const auto nextPath = [&]() -> std::string {
+    if (open.empty()) return "";
+    const Open& parent = open.back();
+    return parent.array ? element(parent.path, parent.elements) : child(parent.path, parent.key);
+  };
+  const auto valueDone = [&] {
+    if (!open.empty() && open.back().array) ++open.back().elements;
+  };
   const Json::parser_callback_t rejectRepeatedKeys = [&](int, Json::parse_event_t event, Json& parsed) {
-    if (event == Json::parse_event_t::object_start) {
-      keysOfOpenObjects.emplace_back();
-    } else if (event == Json::parse_event_t::object_end) {
-      if (!keysOfOpenObjects.empty()) keysOfOpenObjects.pop_back();
-    } else if (event == Json::parse_event_t::key && !keysOfOpenObjects.empty()) {
-      const std::string key = parsed.get<std::string>();
-      if (!keysOfOpenObjects.back().insert(key).second) {
-        in.fail("", "key " + quotedText(key) + " appears twice in one object; each key may appear once");
-      }
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        open.push_back({nextPath(), event == Json::parse_event_t::array_start, 0, {}, {}});
+        break;
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        if (!open.empty()) open.pop_back();
+        valueDone();
+        break;
+      case Json::parse_event_t::key:
+        if (!open.empty()) {
+          open.back().key = parsed.get<std::string>();
+          if (!open.back().keys.insert(open.back().key).second) {
+            in.fail(child(open.back().path, open.back().key), "the key appears twice in its object; each key may appear once");
+          }
+        }
+        break;
+      case Json::parse_event_t::value:
+        valueDone();
+        break;
     }
     return true;
   };

@@ -2,6 +2,7 @@
 
 #include "io/csv_fields.h"
 #include "io/text_files.h"
+#include "common/ray_limits.h"
 
 #include <cmath>
 #include <optional>
@@ -11,12 +12,10 @@ namespace revolve::io {
 std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view file) {
   std::vector<RobotPose> poses;
   bool withZ = false, headerSeen = false;
-  std::size_t lineNumber = 0;
-  while (!text.empty()) {
-    const std::size_t newline = text.find('\n');
-    const std::string_view line = csv::trim(text.substr(0, newline));
-    text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
-    ++lineNumber;
+  csv::Lines lines(text, file);
+  while (const std::optional<std::string_view> raw = lines.next()) {
+    const std::size_t lineNumber = lines.number();
+    const std::string_view line = csv::trim(*raw);
     if (line.empty()) continue;
     const std::vector<std::string_view> fields = csv::splitFields(line);
     if (!headerSeen) {
@@ -39,18 +38,23 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
                        "expected " + std::to_string(columns) + " comma-separated values (" + (withZ ? "x,y,z,yaw" : "x,y,yaw") +
                            "), found " + std::to_string(fields.size()));
     }
-    const auto value = [&](std::size_t i, const char* name, bool emptyIsZero) {
+    // `position`: a coordinate, within the limit every position keeps (common/ray_limits.h).
+    const auto value = [&](std::size_t i, const char* name, bool emptyIsZero, bool position) {
       if (emptyIsZero && fields[i].empty()) return 0.0;
       const std::optional<double> x = csv::parseNumber<double>(fields[i]);
       if (!x) throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not a number");
       if (!std::isfinite(*x)) throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not finite");
+      if (position && std::abs(*x) > app::kMaxWorldCoordinate) {
+        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) +
+                                               " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      }
       return *x;
     };
     RobotPose pose;
-    pose.x = value(0, "x", false);
-    pose.y = value(1, "y", false);
-    pose.z = withZ ? value(2, "z", true) : 0.0;
-    pose.yaw = value(withZ ? 3 : 2, "yaw", false);
+    pose.x = value(0, "x", false, true);
+    pose.y = value(1, "y", false, true);
+    pose.z = withZ ? value(2, "z", true, true) : 0.0;
+    pose.yaw = value(withZ ? 3 : 2, "yaw", false, false);
     poses.push_back(pose);
   }
   if (!headerSeen) throw InputError(file, 0, "empty: expected the header \"x,y,z,yaw\" (or \"x,y,yaw\") and at least one pose");
@@ -58,6 +62,8 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
   return poses;
 }
 
-std::vector<RobotPose> readPosesCsv(const std::string& path) { return parsePosesCsv(readTextFile(path), path); }
+std::vector<RobotPose> readPosesCsv(const std::string& path) {
+  return parsePosesCsv(readTextFile(path, kMaxCsvFileBytes, "a CSV file"), path);
+}
 
 }  // namespace revolve::io

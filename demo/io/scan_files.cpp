@@ -1,15 +1,30 @@
 #include "io/scan_files.h"
 
-#include "io/text_files.h"
-
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 namespace revolve::io {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "binary PCD is written in the byte order PCL reads on x86-64");
+
+constexpr std::size_t kBinaryPointBytes = 4 + 4 + 4 + 4 + 2 + 4;  // x y z range ring object, packed
+
+// A float as its shortest round-trip text ("nan" for NaN), appended at `at`.
+char* appendFloat(char* at, float value) {
+  if (std::isnan(value)) return std::copy_n("nan", 3, at);
+  return std::to_chars(at, at + 32, value).ptr;
+}
+
+}  // namespace
 
 ScanFormat scanFormatFor(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
@@ -17,65 +32,89 @@ ScanFormat scanFormatFor(const std::string& path) {
   if (extension == ".csv") return ScanFormat::csv;
   if (extension == ".pcd") return ScanFormat::pcd;
   throw std::runtime_error(path + ": unsupported scan extension \"" + extension +
-                           "\"; use .csv (a LaserScan-shaped table) or .pcd (an ASCII PCD v0.7 point cloud)");
+                           "\"; use .csv (a LaserScan-shaped table) or .pcd (a PCD v0.7 point cloud)");
 }
 
-void writeScanCsv(const std::string& path, const ScanTable& scan) {
-  writeFileAtomically(path, [&](std::FILE* out) {
-    std::fputs("pose,ring,azimuth,elevation,range,x,y,z,object\n", out);
-    for (std::size_t pose = 0; pose < scan.poses; ++pose) {
-      for (std::size_t ring = 0; ring < scan.rings(); ++ring) {
-        for (std::size_t column = 0; column < scan.azimuths.size(); ++column) {
-          const BeamReturn& beam = scan.at(pose, ring, column);
-          std::fprintf(out, "%zu,%zu,%.9g,%.9g,", pose, ring, scan.azimuths[column], scan.elevations[ring]);
-          if (std::isinf(beam.range)) {
-            std::fputs("inf,,,,\n", out);
-          } else {
-            std::fprintf(out, "%.9g,%.9g,%.9g,%.9g,%d\n", beam.range, beam.x, beam.y, beam.z, int(beam.object));
-          }
-        }
-      }
-    }
-  });
-}
-
-void writeScanPcd(const std::string& path, const ScanTable& scan) {
-  writeFileAtomically(path, [&](std::FILE* out) {
-    const std::size_t width = scan.azimuths.size(), height = scan.rings() * scan.poses;
-    std::fprintf(out,
-                 "# .PCD v0.7 - Point Cloud Data file format\n"
-                 "VERSION 0.7\n"
-                 "FIELDS x y z range ring object\n"
-                 "SIZE 4 4 4 4 2 4\n"
-                 "TYPE F F F F U I\n"
-                 "COUNT 1 1 1 1 1 1\n"
-                 "WIDTH %zu\n"
-                 "HEIGHT %zu\n"
-                 "VIEWPOINT 0 0 0 1 0 0 0\n"
-                 "POINTS %zu\n"
-                 "DATA ascii\n",
-                 width, height, width * height);
-    for (std::size_t pose = 0; pose < scan.poses; ++pose) {
-      for (std::size_t ring = 0; ring < scan.rings(); ++ring) {
-        for (std::size_t column = 0; column < width; ++column) {
-          const BeamReturn& beam = scan.at(pose, ring, column);
-          if (std::isinf(beam.range)) {
-            std::fprintf(out, "nan nan nan nan %zu -1\n", ring);
-          } else {
-            std::fprintf(out, "%.9g %.9g %.9g %.9g %zu %d\n", beam.x, beam.y, beam.z, beam.range, ring, int(beam.object));
-          }
-        }
-      }
-    }
-  });
-}
-
-void writeScan(const std::string& path, const ScanTable& scan) {
-  if (scanFormatFor(path) == ScanFormat::csv) {
-    writeScanCsv(path, scan);
-  } else {
-    writeScanPcd(path, scan);
+ScanWriter::ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const ScanLayout& layout)
+    : out_(out), format_(format), data_(data), layout_(layout) {
+  if (format_ == ScanFormat::csv) {
+    out_.write("pose,ring,azimuth,elevation,range,x,y,z,object\n");
+    return;
   }
+  const std::size_t width = layout_.azimuths.size(), height = layout_.rings() * layout_.poses;
+  out_.print("# .PCD v0.7 - Point Cloud Data file format\n"
+             "VERSION 0.7\n"
+             "FIELDS x y z range ring object\n"
+             "SIZE 4 4 4 4 2 4\n"
+             "TYPE F F F F U I\n"
+             "COUNT 1 1 1 1 1 1\n"
+             "WIDTH %zu\n"
+             "HEIGHT %zu\n"
+             "VIEWPOINT 0 0 0 1 0 0 0\n"
+             "POINTS %zu\n"
+             "DATA %s\n",
+             width, height, width * height, data_ == PcdData::binary ? "binary" : "ascii");
+}
+
+void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
+  const std::size_t columns = layout_.azimuths.size(), rings = layout_.rings();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  if (format_ == ScanFormat::csv) {
+    for (std::size_t i = 0; i < beams.size(); ++i) {
+      const std::uint64_t beam = first + i;
+      const std::size_t pose = beam / (rings * columns), ring = (beam / columns) % rings, column = beam % columns;
+      const BeamReturn& b = beams[i];
+      if (std::isinf(b.range)) {
+        out_.print("%zu,%zu,%.9g,%.9g,inf,,,,\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring]);
+      } else {
+        out_.print("%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring], b.range, b.x,
+                   b.y, b.z, int(b.object));
+      }
+    }
+    return;
+  }
+  if (data_ == PcdData::binary) {
+    buffer_.resize(beams.size() * kBinaryPointBytes);
+    char* at = buffer_.data();
+    for (std::size_t i = 0; i < beams.size(); ++i) {
+      const BeamReturn& b = beams[i];
+      const bool hit = !std::isinf(b.range);
+      const float fields[4] = {hit ? b.x : nan, hit ? b.y : nan, hit ? b.z : nan, hit ? b.range : nan};
+      const auto ring = std::uint16_t((first + i) / columns % rings);
+      const std::int32_t object = hit ? b.object : -1;
+      std::memcpy(at, fields, sizeof fields);
+      std::memcpy(at + 16, &ring, 2);
+      std::memcpy(at + 18, &object, 4);
+      at += kBinaryPointBytes;
+    }
+    out_.write(buffer_.data(), buffer_.size());
+    return;
+  }
+  // ASCII: the longest line is 4 floats of at most 15 characters, a ring and an object index.
+  buffer_.resize(beams.size() * 96);
+  char* at = buffer_.data();
+  for (std::size_t i = 0; i < beams.size(); ++i) {
+    const BeamReturn& b = beams[i];
+    const bool hit = !std::isinf(b.range);
+    for (const float value : {hit ? b.x : nan, hit ? b.y : nan, hit ? b.z : nan, hit ? b.range : nan}) {
+      at = appendFloat(at, value);
+      *at++ = ' ';
+    }
+    at = std::to_chars(at, at + 16, (first + i) / columns % rings).ptr;
+    *at++ = ' ';
+    at = std::to_chars(at, at + 16, hit ? b.object : -1).ptr;
+    *at++ = '\n';
+  }
+  out_.write(buffer_.data(), std::size_t(at - buffer_.data()));
+}
+
+void writeScan(const std::string& path, const ScanTable& scan, PcdData data) {
+  const ScanFormat format = scanFormatFor(path);
+  OutputSet outputs;
+  outputs.add("", path);
+  ScanWriter writer(outputs.stream(path), format, data, scan);
+  writer.write(0, scan.beams);
+  outputs.commit();
 }
 
 }  // namespace revolve::io

@@ -1,9 +1,15 @@
-// Range scans as files other tools read: a LaserScan-shaped CSV table and an organised ASCII PCD
-// v0.7 point cloud (PCL, Open3D, CloudCompare), chosen by the output's extension. Both are written
-// through a temporary file renamed into place (text_files.h), so an output is whole or absent.
+// Range scans as files other tools read: a LaserScan-shaped CSV table and an organised PCD v0.7
+// point cloud (PCL, Open3D, CloudCompare), ASCII or binary, chosen by the output's extension and
+// an option. A scan is written as it is traced, block by block in beam order, so memory does not
+// grow with the number of poses; the file goes to a temporary renamed into place (output_set.h),
+// so it is whole or absent.
 #pragma once
 
+#include "io/output_set.h"
+
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,35 +21,63 @@ struct BeamReturn {
   std::int32_t object;  // the scene's object index (quads: objects + quad index); -1 without a return
 };
 
-// Beams of several poses, each a grid of rings (channels) x azimuths.
-struct ScanTable {
+// The shape of a scan: poses, each a grid of rings (channels) x azimuths. Beams are numbered in
+// pose, ring, azimuth order: (pose * rings + ring) * azimuths + column.
+struct ScanLayout {
   std::vector<double> azimuths;    // radians, in the sensor's frame, one per column
   std::vector<double> elevations;  // radians, one per ring
   std::size_t poses = 0;
-  std::vector<BeamReturn> beams;   // (pose * rings + ring) * azimuths + column
 
   std::size_t rings() const { return elevations.size(); }
+  std::size_t beamsPerPose() const { return rings() * azimuths.size(); }
+  std::uint64_t beamCount() const { return std::uint64_t(poses) * beamsPerPose(); }
+};
+
+// The most beams one scan file holds: 2^31 - 1, PCD's point count as PCL indexes it (a signed
+// 32-bit index), and at 22 to 60 bytes a beam already 47 to 130 GB of output.
+inline constexpr std::uint64_t kMaxScanBeams = (std::uint64_t{1} << 31) - 1;
+
+// A whole scan in memory, for tests and the benchmark (the tools stream).
+struct ScanTable : ScanLayout {
+  std::vector<BeamReturn> beams;
+
   const BeamReturn& at(std::size_t pose, std::size_t ring, std::size_t column) const {
     return beams[(pose * rings() + ring) * azimuths.size() + column];
   }
 };
 
 enum class ScanFormat { csv, pcd };
+enum class PcdData { ascii, binary };
 
 // The format for `path`'s extension (.csv or .pcd, case-insensitive), or std::runtime_error
 // naming the file and the extensions supported.
 ScanFormat scanFormatFor(const std::string& path);
 
-// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object`, one row per beam in pose, ring,
-// azimuth order; `range` is `inf` and x, y, z and object are empty for no return (%.9g numbers).
-void writeScanCsv(const std::string& path, const ScanTable& scan);
+// Writes one scan in beam order: the header when made, then each block of beams as it comes.
+//
+// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object`, one row per beam; `range` is `inf`
+// and x, y, z and object are empty for no return (%.9g numbers).
+//
+// PCD v0.7, organised: WIDTH = azimuths, HEIGHT = rings x poses (row = pose * rings + ring); fields
+// `x y z range ring object` (F F F F U I, sizes 4 4 4 4 2 4); x, y, z and range are nan for no
+// return, object -1; points in the world frame, so VIEWPOINT is the identity. `DATA ascii`: one
+// point a line, floats in their shortest round-trip text. `DATA binary`: PCL's layout, each point
+// its fields packed in order (22 bytes, little-endian as PCL writes on x86-64), no padding.
+class ScanWriter {
+ public:
+  ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const ScanLayout& layout);
+  // Beams `first`, `first` + 1, ... (their numbers in beam order).
+  void write(std::uint64_t first, std::span<const BeamReturn> beams);
 
-// ASCII PCD v0.7, organised: WIDTH = azimuths, HEIGHT = rings x poses (row = pose * rings + ring);
-// fields `x y z range ring object` (F F F F U I); x, y, z and range are nan for no return, object
-// -1. Points are in the world frame, so VIEWPOINT is the identity.
-void writeScanPcd(const std::string& path, const ScanTable& scan);
+ private:
+  OutputStream& out_;
+  ScanFormat format_;
+  PcdData data_;
+  const ScanLayout& layout_;
+  std::vector<char> buffer_;
+};
 
-// Writes by the extension of `path`.
-void writeScan(const std::string& path, const ScanTable& scan);
+// A whole table to `path`, alone (by its extension).
+void writeScan(const std::string& path, const ScanTable& scan, PcdData data = PcdData::ascii);
 
 }  // namespace revolve::io

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -20,33 +22,26 @@ using json::Json;
 using json::quotedText;
 using Reader = json::Reader<SceneError>;
 
-std::string degreesText(double value) { return json::numberText(value); }
+using json::numberText;
+using json::unitVector;
 
-Vec3d nonZero(const Reader& in, const Json& value, const std::string& path) {
-  const Vec3d v = in.vec3(value, path);
-  if (v[0] == 0 && v[1] == 0 && v[2] == 0) in.fail(path, "the vector is zero; a direction is needed");
-  return v;
-}
+// Reflectances lie in [0, 1]. Radiance and intensity lie in [0, 1e18]: the renderer computes in
+// float (up to 3.4e38), which must hold them times a point light's 1/d^2 and a pixel's sum of
+// samples.
+constexpr double kReflectance = 1;
+constexpr double kMaxLight = 1e18;
 
-// A colour: three numbers each in [0, hi] (hi = 1 for reflectances, unbounded for radiance).
+// A colour: three numbers each in [0, hi].
 Rgb rgb(const Reader& in, const Json& value, const std::string& path, double hi) {
   if (!value.is_array() || value.size() != 3) in.fail(path, "expected a colour [r, g, b]");
   Rgb c;
   for (std::size_t i = 0; i < 3; ++i) {
     c[i] = in.number(value[i], element(path, i));
-    if (!(c[i] >= 0 && c[i] <= hi)) {
-      in.fail(element(path, i), degreesText(c[i]) + (hi == 1 ? " is out of range: a reflectance lies in [0, 1]"
-                                                            : " is negative: light cannot be"));
-    }
+    if (c[i] >= 0 && c[i] <= hi) continue;
+    if (hi == kReflectance) in.fail(element(path, i), numberText(value[i]) + " is out of range: a reflectance lies in [0, 1]");
+    in.fail(element(path, i), numberText(value[i]) + " is out of range: light values lie in [0, 1e18] (the renderer computes in float)");
   }
   return c;
-}
-
-constexpr double kUnbounded = 1.0e300;
-
-Vec3d normalised(Vec3d v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / n, v[1] / n, v[2] / n};
 }
 
 Vec3d cross(Vec3d a, Vec3d b) {
@@ -57,16 +52,18 @@ SceneCamera readCamera(const Reader& in, const Json& json) {
   const std::string path = "camera";
   in.object(json, path, {"from", "to", "up", "fov", "width", "height", "spp"});
   SceneCamera camera;
-  camera.from = in.vec3(in.required(json, path, "from"), "camera.from");
-  camera.to = in.vec3(in.required(json, path, "to"), "camera.to");
-  camera.up = nonZero(in, in.required(json, path, "up"), "camera.up");
-  camera.fovDegrees = in.number(in.required(json, path, "fov"), "camera.fov");
+  camera.from = in.position(in.required(json, path, "from"), "camera.from");
+  camera.to = in.position(in.required(json, path, "to"), "camera.to");
+  camera.up = in.direction(in.required(json, path, "up"), "camera.up");
+  const Json& fov = in.required(json, path, "fov");
+  camera.fovDegrees = in.number(fov, "camera.fov");
   if (!(camera.fovDegrees > 0 && camera.fovDegrees < 180)) {
-    in.fail("camera.fov", degreesText(camera.fovDegrees) + " is out of range: the vertical field of view lies in (0, 180) degrees");
+    in.fail("camera.fov", numberText(fov) + " is out of range: the vertical field of view lies in (0, 180) degrees");
   }
+  // Both within the coordinate limit, so the difference is exact or finite.
   const Vec3d view{camera.to[0] - camera.from[0], camera.to[1] - camera.from[1], camera.to[2] - camera.from[2]};
   if (view[0] == 0 && view[1] == 0 && view[2] == 0) in.fail("camera.to", "equals camera.from; the camera needs a direction");
-  const Vec3d side = cross(normalised(view), normalised(camera.up));
+  const Vec3d side = cross(unitVector(view), camera.up);
   if (std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]) < 1e-6) {
     in.fail("camera.up", "is parallel to the view direction (to - from)");
   }
@@ -105,7 +102,7 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
     for (const ProfileWarning& warning : built->warnings()) {
       warnings.push_back(in.file() + ": " + element(pointsPath, warning.index) + ": " + warning.message);
     }
-    return {name, std::move(*built), creaseDegrees, std::move(warnings)};
+    return {name, std::move(*built), creaseDegrees, std::move(warnings), {}};
   }
   const std::string csvPath = child(path, "csv");
   const std::string relative = in.string(*csv, csvPath);
@@ -121,12 +118,12 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
     built.emplace(csvPoints.points);
   } catch (const ProfileError& error) {
     const std::size_t line = error.index() < csvPoints.lines.size() ? csvPoints.lines[error.index()] : 0;
-    in.fail(csvPath, file + ":" + std::to_string(line) + ": " + error.what());
+    in.fail(csvPath, InputError(file, line, error.what()).what());
   }
   for (const ProfileWarning& warning : built->warnings()) {
-    warnings.push_back(file + ":" + std::to_string(csvPoints.lines[warning.index]) + ": " + warning.message);
+    warnings.push_back(InputError(file, csvPoints.lines[warning.index], warning.message).what());
   }
-  return {name, std::move(*built), creaseDegrees, std::move(warnings)};
+  return {name, std::move(*built), creaseDegrees, std::move(warnings), file};
 }
 
 SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json& json, const std::string& path) {
@@ -137,11 +134,11 @@ SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json
   if (type == "diffuse" || type == "mirror") {
     in.object(json, path, {"type", "color"});
     material.type = type == "diffuse" ? MaterialType::diffuse : MaterialType::mirror;
-    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), 1);
+    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), kReflectance);
   } else if (type == "metal") {
     in.object(json, path, {"type", "color", "roughness"});
     material.type = MaterialType::metal;
-    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), 1);
+    material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), kReflectance);
     material.roughness = in.numberIn(in.required(json, path, "roughness"), child(path, "roughness"), 0, 1,
                                      "roughness lies in [0, 1]");
   } else if (type == "glass") {
@@ -149,7 +146,7 @@ SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json
     material.type = MaterialType::glass;
     material.ior = in.numberIn(in.required(json, path, "ior"), child(path, "ior"), 1, 4,
                                "an index of refraction lies in [1, 4]");
-    if (const Json* tint = in.optional(json, "tint")) material.tint = rgb(in, *tint, child(path, "tint"), 1);
+    if (const Json* tint = in.optional(json, "tint")) material.tint = rgb(in, *tint, child(path, "tint"), kReflectance);
   } else {
     in.fail(child(path, "type"), quotedText(type) + " is not a material type; expected one of: diffuse, metal, mirror, glass");
   }
@@ -169,28 +166,42 @@ std::size_t lookUp(const Reader& in, const std::vector<Named>& list, const Json&
 
 SceneTransform readTransform(const Reader& in, const Json& json, const std::string& path) {
   SceneTransform transform;
-  if (const Json* translate = in.optional(json, "translate")) transform.translate = in.vec3(*translate, child(path, "translate"));
+  if (const Json* translate = in.optional(json, "translate")) transform.translate = in.position(*translate, child(path, "translate"));
   if (const Json* rotate = in.optional(json, "rotate")) {
     const std::string rotatePath = child(path, "rotate");
     if (!rotate->is_array() || rotate->size() != 4) in.fail(rotatePath, "expected [axis x, axis y, axis z, degrees]");
     Vec3d axis;
     for (std::size_t i = 0; i < 3; ++i) axis[i] = in.number((*rotate)[i], element(rotatePath, i));
     if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0) in.fail(rotatePath, "the rotation axis is zero");
-    transform.rotateAxis = normalised(axis);
+    transform.rotateAxis = unitVector(axis);
     transform.rotateDegrees = in.number((*rotate)[3], element(rotatePath, 3));
   }
   if (const Json* scale = in.optional(json, "scale")) {
     const std::string scalePath = child(path, "scale");
+    const auto factor = [&](const Json& value, const std::string& where) {
+      const double s = in.number(value, where);
+      if (!(s > 0)) in.fail(where, numberText(value) + " is not positive: scale factors must be > 0");
+      if (!(s >= app::kMinScale && s <= app::kMaxScale)) {
+        in.fail(where, numberText(value) + " is out of range: scale factors lie in [2^-16, 2^40] (1.5e-05 to 1.1e12), "
+                                           "within which Embree's float instance transform keeps every ray in its range");
+      }
+      return s;
+    };
     if (scale->is_number()) {
-      const double s = in.number(*scale, scalePath);
+      const double s = factor(*scale, scalePath);
       transform.scale = {s, s, s};
     } else if (scale->is_array() && scale->size() == 3) {
-      transform.scale = in.vec3(*scale, scalePath);
+      for (std::size_t i = 0; i < 3; ++i) transform.scale[i] = factor((*scale)[i], element(scalePath, i));
     } else {
       in.fail(scalePath, "expected a number or [sx, sy, sz]");
     }
-    for (const double s : transform.scale) {
-      if (!(s > 0)) in.fail(scalePath, degreesText(s) + " is not positive: scale factors must be > 0");
+    const auto [smallest, largest] = std::minmax({transform.scale[0], transform.scale[1], transform.scale[2]});
+    if (largest > app::kMaxScaleRatio * smallest) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", largest / smallest);
+      in.fail(scalePath, std::string("the scale factors differ by a factor ") + text +
+                             ": they lie within a factor 2^16 (65536) of each other, so that Embree's float transform "
+                             "keeps rays leaving the object within range");
     }
   }
   return transform;
@@ -203,13 +214,13 @@ SceneLight readLight(const Reader& in, const Json& json, const std::string& path
   if (type == "point") {
     in.object(json, path, {"type", "position", "intensity"});
     light.type = LightType::point;
-    light.position = in.vec3(in.required(json, path, "position"), child(path, "position"));
-    light.intensity = rgb(in, in.required(json, path, "intensity"), child(path, "intensity"), kUnbounded);
+    light.position = in.position(in.required(json, path, "position"), child(path, "position"));
+    light.intensity = rgb(in, in.required(json, path, "intensity"), child(path, "intensity"), kMaxLight);
   } else if (type == "sun") {
     in.object(json, path, {"type", "direction", "irradiance", "angle"});
     light.type = LightType::sun;
-    light.direction = normalised(nonZero(in, in.required(json, path, "direction"), child(path, "direction")));
-    light.irradiance = rgb(in, in.required(json, path, "irradiance"), child(path, "irradiance"), kUnbounded);
+    light.direction = in.direction(in.required(json, path, "direction"), child(path, "direction"));
+    light.irradiance = rgb(in, in.required(json, path, "irradiance"), child(path, "irradiance"), kMaxLight);
     if (const Json* angle = in.optional(json, "angle")) {
       light.angleDegrees = in.numberIn(*angle, child(path, "angle"), 0, 45, "the sun's apparent diameter lies in [0, 45] degrees");
     }
@@ -227,17 +238,48 @@ SceneEnvironment readEnvironment(const Reader& in, const Json& json) {
   if ((color != nullptr) == (sky != nullptr)) in.fail(path, "needs exactly one of \"color\" or \"sky\"");
   SceneEnvironment environment;
   if (color != nullptr) {
-    environment.color = rgb(in, *color, "environment.color", kUnbounded);
+    environment.color = rgb(in, *color, "environment.color", kMaxLight);
     return environment;
   }
   in.object(*sky, "environment.sky", {"zenith", "horizon"});
   environment.sky = true;
-  environment.zenith = rgb(in, in.required(*sky, "environment.sky", "zenith"), "environment.sky.zenith", kUnbounded);
-  environment.horizon = rgb(in, in.required(*sky, "environment.sky", "horizon"), "environment.sky.horizon", kUnbounded);
+  environment.zenith = rgb(in, in.required(*sky, "environment.sky", "zenith"), "environment.sky.zenith", kMaxLight);
+  environment.horizon = rgb(in, in.required(*sky, "environment.sky", "horizon"), "environment.sky.horizon", kMaxLight);
   return environment;
 }
 
 }  // namespace
+
+Matrix3d rotationOf(const SceneTransform& transform) {
+  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
+  const double c = std::cos(theta), s = std::sin(theta);
+  const auto& k = transform.rotateAxis;
+  return {Vec3d{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
+          Vec3d{k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
+          Vec3d{k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
+}
+
+Matrix3d linearPart(const SceneTransform& transform) {
+  Matrix3d m = rotationOf(transform);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m[i][j] *= transform.scale[j];
+  }
+  return m;
+}
+
+double worldReach(const Profile& profile, const SceneTransform& transform) {
+  double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
+  for (const Point2 p : profile.points()) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  const Matrix3d m = linearPart(transform);
+  double reach = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
+    for (int a = 0; a < 3; ++a) {
+      reach = std::max(reach, std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
+    }
+  }
+  return reach;
+}
 
 SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
   const Reader in(file);
@@ -269,6 +311,12 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     object.material = lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
     if (const Json* name = in.optional(json, "name")) object.name = in.string(*name, child(path, "name"));
     object.transform = readTransform(in, json, path);
+    // Hits on it must lie within the limit too: secondary rays start there.
+    if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform); !(reach <= app::kMaxWorldCoordinate)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", reach);  // computed: three digits say it
+      in.fail(path, std::string("the placed object reaches ") + text + ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+    }
     scene.objects.push_back(std::move(object));
   }
 
@@ -280,7 +328,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
       SceneQuad quad;
       const Json& corners = in.required(json, path, "corners");
       if (!corners.is_array() || corners.size() != 4) in.fail(child(path, "corners"), "expected 4 corners [[x, y, z], ...]");
-      for (std::size_t c = 0; c < 4; ++c) quad.corners[c] = in.vec3(corners[c], element(child(path, "corners"), c));
+      for (std::size_t c = 0; c < 4; ++c) quad.corners[c] = in.position(corners[c], element(child(path, "corners"), c));
       // Both triangles must have an area, or Embree would drop them silently.
       for (const auto& [a, b] : {std::pair{1, 2}, std::pair{2, 3}}) {
         const Vec3d e1{quad.corners[a][0] - quad.corners[0][0], quad.corners[a][1] - quad.corners[0][1], quad.corners[a][2] - quad.corners[0][2]};
@@ -306,7 +354,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
 SceneDescription readScene(const std::string& path) {
   std::string text;
   try {
-    text = readTextFile(path);
+    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
   } catch (const InputError& error) {
     throw SceneError(error.what());
   }

@@ -6,7 +6,9 @@
 //
 // The reader is strict: a missing or unknown key, a wrong type, an unknown name, a bad profile or
 // an unreadable profile CSV is a SceneError naming the file, the key path
-// (`objects[12].profile: no profile named "botle"`), the value and the rule, on one line.
+// (`objects[12].profile: no profile named "botle"`), the value and the rule, on one line. Positions
+// (and every placed object's reach) lie within the coordinate limit and scale factors within the
+// range of common/ray_limits.h, so that no ray the tools trace breaks Embree's contract.
 #pragma once
 
 #include <revolve/revolve.h>
@@ -40,6 +42,7 @@ struct SceneProfile {
   Profile profile;
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
   std::vector<std::string> warnings;  // "where: message" for each point the Profile dropped
+  std::string csvFile;  // the CSV it was read from, as opened; empty for inline points
 };
 
 enum class MaterialType { diffuse, metal, mirror, glass };
@@ -60,6 +63,17 @@ struct SceneTransform {
   double rotateDegrees = 0;
   Vec3d translate{0, 0, 0};
 };
+
+using Matrix3d = std::array<Vec3d, 3>;  // row by row
+
+// The transform's rotation (Rodrigues' formula about its unit axis) and its linear part, rotate *
+// scale, in double.
+Matrix3d rotationOf(const SceneTransform& transform);
+Matrix3d linearPart(const SceneTransform& transform);
+
+// The largest |coordinate| any point of `profile` reaches placed by `transform`: the corners of
+// its box [-rmax, rmax]^2 x [zmin, zmax], carried to the world.
+double worldReach(const Profile& profile, const SceneTransform& transform);
 
 struct SceneObject {
   std::string name;          // empty unless given

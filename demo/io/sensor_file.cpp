@@ -31,7 +31,7 @@ SensorPose readPose(const Reader& in, const Json& json) {
   const std::string path = "pose";
   in.object(json, path, {"position", "yaw", "pitch", "roll"});
   SensorPose pose;
-  pose.position = in.vec3(in.required(json, path, "position"), "pose.position");
+  pose.position = in.position(in.required(json, path, "position"), "pose.position");
   if (const Json* v = in.optional(json, "yaw")) pose.yaw = angle(in, *v, "pose.yaw");
   if (const Json* v = in.optional(json, "pitch")) pose.pitch = angle(in, *v, "pose.pitch");
   if (const Json* v = in.optional(json, "roll")) pose.roll = angle(in, *v, "pose.roll");
@@ -133,7 +133,7 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
 SensorDescription readSensor(const std::string& path) {
   std::string text;
   try {
-    text = readTextFile(path);
+    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
   } catch (const InputError& error) {
     throw SensorError(error.what());
   }

@@ -3,17 +3,10 @@
 #include "io/csv_fields.h"
 
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <type_traits>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace revolve::io {
 namespace {
@@ -27,14 +20,11 @@ using csv::trim;
 // and a first line that starts with a non-number is reported as a wrong header.
 template <class Row>
 void forEachRow(std::string_view text, std::string_view file, std::string_view header, std::size_t columns, Row&& row) {
-  std::size_t lineNumber = 0;
+  csv::Lines lines(text, file);
   bool first = true;
-  while (!text.empty()) {
-    const std::size_t newline = text.find('\n');
-    const std::string_view raw = text.substr(0, newline);
-    text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
-    ++lineNumber;
-    const std::string_view line = trim(raw);
+  while (const std::optional<std::string_view> raw = lines.next()) {
+    const std::size_t lineNumber = lines.number();
+    const std::string_view line = trim(*raw);
     if (line.empty()) continue;
     const std::vector<std::string_view> fields = splitFields(line);
     if (first) {
@@ -69,21 +59,6 @@ T numberAt(const std::vector<std::string_view>& fields, std::size_t i, std::stri
 
 }  // namespace
 
-InputError::InputError(std::string_view file, std::size_t line, const std::string& problem)
-    : std::runtime_error(std::string(file) + ":" + std::to_string(line) + ": " + problem) {}
-
-std::string readTextFile(const std::string& path) {
-  // A directory opens like a file and reads as empty; say what it is instead.
-  std::error_code code;
-  if (std::filesystem::is_directory(path, code)) throw InputError(path, 0, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::ostringstream contents;
-  contents << in.rdbuf();
-  if (in.bad()) throw InputError(path, 0, "read error");
-  return std::move(contents).str();
-}
-
 ProfileFile parseProfileCsv(std::string_view text, std::string_view file) {
   ProfileFile profile;
   forEachRow(text, file, "r,z", 2, [&](const std::vector<std::string_view>& fields, std::size_t line) {
@@ -94,7 +69,9 @@ ProfileFile parseProfileCsv(std::string_view text, std::string_view file) {
   return profile;
 }
 
-ProfileFile readProfileCsv(const std::string& path) { return parseProfileCsv(readTextFile(path), path); }
+ProfileFile readProfileCsv(const std::string& path) {
+  return parseProfileCsv(readTextFile(path, kMaxCsvFileBytes, "a CSV file"), path);
+}
 
 std::vector<Ray> parseRaysCsv(std::string_view text, std::string_view file) {
   static constexpr std::array<std::string_view, 8> kNames{"ox", "oy", "oz", "dx", "dy", "dz", "tnear", "tfar"};
@@ -110,6 +87,12 @@ std::vector<Ray> parseRaysCsv(std::string_view text, std::string_view file) {
                                          " is not finite" + (i == 7 ? " (tfar may be inf)" : ""));
       }
     }
+    for (std::size_t i = 0; i < 6; ++i) {
+      if (std::abs(double(v[i])) > Profile::kMaxCoordinate) {
+        throw InputError(file, line, std::string(kNames[i]) + " = " + quote(fields[i]) +
+                                         " is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and Embree accepts");
+      }
+    }
     if (v[3] == 0.0f && v[4] == 0.0f && v[5] == 0.0f) throw InputError(file, line, "direction (0, 0, 0) is zero");
     if (!(v[6] >= 0.0f)) throw InputError(file, line, "tnear = " + quote(fields[6]) + " is negative; need tnear >= 0");
     if (!(v[6] <= v[7])) {
@@ -120,65 +103,26 @@ std::vector<Ray> parseRaysCsv(std::string_view text, std::string_view file) {
   return rays;
 }
 
-std::vector<Ray> readRaysCsv(const std::string& path) { return parseRaysCsv(readTextFile(path), path); }
-
-void writeFileAtomically(const std::string& path, const std::function<void(std::FILE*)>& write) {
-  std::string temporary = path + ".tmp-XXXXXX";
-  const int descriptor = mkstemp(temporary.data());
-  if (descriptor < 0) throw std::runtime_error(path + ": cannot create a temporary file: " + std::strerror(errno));
-  // mkstemp makes the file private (0600); give the result the permissions a plain create would.
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(descriptor, 0666 & ~mask);
-  std::FILE* out = fdopen(descriptor, "w");
-  if (out == nullptr) {
-    const int error = errno;
-    close(descriptor);
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": " + std::strerror(error));
-  }
-  try {
-    write(out);
-  } catch (...) {
-    std::fclose(out);
-    std::remove(temporary.c_str());
-    throw;
-  }
-  const bool failed = std::ferror(out) != 0;
-  const int error = errno;
-  if (std::fclose(out) != 0 || failed) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": write failed: " + std::strerror(error));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int renameError = errno;
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot replace: " + std::strerror(renameError));
-  }
+std::vector<Ray> readRaysCsv(const std::string& path) {
+  return parseRaysCsv(readTextFile(path, kMaxCsvFileBytes, "a CSV file"), path);
 }
 
-void checkWritable(const std::string& path) {
-  std::error_code code;
-  if (std::filesystem::is_directory(path, code)) throw std::runtime_error(path + ": is a directory, not a file");
-  std::string temporary = path + ".tmp-XXXXXX";
-  const int descriptor = mkstemp(temporary.data());
-  if (descriptor < 0) throw std::runtime_error(path + ": cannot create a file there: " + std::strerror(errno));
-  close(descriptor);
-  std::remove(temporary.c_str());
+void writeHitsCsv(OutputStream& out, const std::vector<std::optional<Hit>>& hits) {
+  out.write("hit,t,nx,ny,nz,u,v\n");
+  for (const std::optional<Hit>& hit : hits) {
+    if (!hit) {
+      out.write("0,inf,0,0,0,0,0\n");
+      continue;
+    }
+    out.print("1,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", hit->t, hit->normal.x, hit->normal.y, hit->normal.z, hit->u, hit->v);
+  }
 }
 
 void writeHitsCsv(const std::string& path, const std::vector<std::optional<Hit>>& hits) {
-  writeFileAtomically(path, [&](std::FILE* out) {
-    std::fputs("hit,t,nx,ny,nz,u,v\n", out);
-    for (const std::optional<Hit>& hit : hits) {
-      if (!hit) {
-        std::fputs("0,inf,0,0,0,0,0\n", out);
-        continue;
-      }
-      std::fprintf(out, "1,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", hit->t, hit->normal.x, hit->normal.y, hit->normal.z,
-                   hit->u, hit->v);
-    }
-  });
+  OutputSet outputs;
+  outputs.add("", path);
+  writeHitsCsv(outputs.stream(path), hits);
+  outputs.commit();
 }
 
 }  // namespace revolve::io

@@ -4,6 +4,9 @@
 // guess. Writers go through a temporary file renamed into place, so an output is whole or absent.
 #pragma once
 
+#include "io/input_file.h"
+#include "io/output_set.h"
+
 #include <revolve/revolve.h>
 
 #include <cstddef>
@@ -15,12 +18,6 @@
 #include <vector>
 
 namespace revolve::io {
-
-// "file:line: problem" (line 0 when the problem is not on one line).
-class InputError : public std::runtime_error {
- public:
-  InputError(std::string_view file, std::size_t line, const std::string& problem);
-};
 
 struct ProfileFile {
   std::vector<Point2> points;
@@ -35,24 +32,15 @@ ProfileFile readProfileCsv(const std::string& path);
 // Rays CSV: an optional header `ox,oy,oz,dx,dy,dz,tnear,tfar`, then one ray per line, read as
 // 32-bit floats (each field rounded once, from its decimal text; beyond float's range that gives
 // +-inf or, gradually, zero). Every value must be finite
-// except tfar, which may be inf; the direction must be non-zero, and 0 <= tnear <= tfar.
+// except tfar, which may be inf; the direction must be non-zero, and 0 <= tnear <= tfar. Origin
+// and direction components lie within +-Profile::kMaxCoordinate (2^60, about 1.15e18), the range
+// revolve traces and Embree accepts (its FLT_LARGE, 1.844e18, is the bound it asserts).
 std::vector<Ray> parseRaysCsv(std::string_view text, std::string_view file);
 std::vector<Ray> readRaysCsv(const std::string& path);
 
-// Reads a whole file; InputError when it cannot be opened or read.
-std::string readTextFile(const std::string& path);
-
-// Writes `path` atomically: `write` fills a temporary file beside it, which is renamed over `path`
-// only once complete. On any failure the temporary is removed, `path` is untouched, and
-// std::runtime_error names the file and the cause.
-void writeFileAtomically(const std::string& path, const std::function<void(std::FILE*)>& write);
-
-// Whether writeFileAtomically could create `path`: throws std::runtime_error naming it when it is
-// a directory or its folder takes no new file. Lets a tool fail before doing its work.
-void checkWritable(const std::string& path);
-
 // Hits CSV: header `hit,t,nx,ny,nz,u,v`, one line per ray in order: `1,t,nx,ny,nz,u,v` (%.9g)
-// or `0,inf,0,0,0,0,0` for a miss.
+// or `0,inf,0,0,0,0,0` for a miss. Written into `out` (an output's stream), or alone to `path`.
+void writeHitsCsv(OutputStream& out, const std::vector<std::optional<Hit>>& hits);
 void writeHitsCsv(const std::string& path, const std::vector<std::optional<Hit>>& hits);
 
 }  // namespace revolve::io

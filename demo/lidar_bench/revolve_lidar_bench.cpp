@@ -17,6 +17,8 @@
 //     mesh, each configuration timed --repeats
 //     times (whole passes over the poses for at least 0.25 s each), the configurations interleaved
 //     within each repeat; the median is reported.
+#include "common/command_line.h"
+#include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
@@ -156,9 +158,13 @@ struct Options {
 };
 
 void run(const Options& options, const std::string& commandLine) {
-  io::checkWritable(options.output);
   const io::SceneDescription scene = io::readScene(options.scene);
   const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
+  io::OutputSet outputs;
+  outputs.addInput("the scene file", options.scene);
+  for (const io::SceneProfile& profile : scene.profiles) outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  outputs.addInput("the poses file (--poses)", options.poses);
+  outputs.add("--out", options.output);
   const bench::ReferenceRanges reference(scene);
   const std::vector<io::SensorDescription> sensors{planarScanner(), spinningScanner()};
   std::vector<std::vector<std::optional<bench::ReferenceHit>>> truth;
@@ -271,7 +277,8 @@ void run(const Options& options, const std::string& commandLine) {
                     {"equal_accuracy_rule", rule},
                     {"throughput", throughput}};
   const std::string text = result.dump(1) + "\n";
-  io::writeFileAtomically(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+  outputs.write(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+  outputs.commit();
 }
 
 }  // namespace
@@ -279,19 +286,18 @@ void run(const Options& options, const std::string& commandLine) {
 int main(int argc, char** argv) {
   Options options;
   CLI::App app{"Range error and scan throughput of revolve's exact surfaces against tessellated meshes (README, Robot range-finding)."};
-  app.add_option("scene", options.scene, "scene file (JSON)")->required();
-  app.add_option("--poses", options.poses, "robot poses (CSV)")->required();
-  app.add_option("--out", options.output, "results (JSON)")->required();
-  app.add_option("--slices", options.slices, "mesh slice counts to measure")->delimiter(',')->capture_default_str();
-  app.add_option("--repeats", options.repeats, "timing repeats (the median is reported)")->check(CLI::Range(1, 1000))->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.add_option("scene", options.scene, "scene file (JSON)")->required()->check(app::kNonEmpty);
+  app.add_option("--poses", options.poses, "robot poses (CSV)")->required()->check(app::kNonEmpty);
+  app.add_option("--out", options.output, "results (JSON)")->required()->check(app::kNonEmpty);
+  app.add_option("--slices", options.slices, "mesh slice counts to measure")
+      ->delimiter(',')
+      ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 16))
+      ->capture_default_str();
+  app.add_option("--repeats", options.repeats, "timing repeats (the median is reported)")
+      ->check(app::wholeNumberIn(1, 1000))
+      ->capture_default_str();
+  if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-lidar-bench")) return *status;
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
-  try {
-    run(options, commandLine);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "revolve-lidar-bench: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+  return app::runTool("revolve-lidar-bench", options.scene, [&] { run(options, commandLine); });
 }

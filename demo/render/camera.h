@@ -1,9 +1,11 @@
 // A pinhole camera from the scene's from / to / up / vertical field of view.
 #pragma once
 
+#include "common/unit_vector.h"
 #include "common/vector_math.h"
 #include "io/scene_file.h"
 
+#include <cfloat>
 #include <cmath>
 #include <numbers>
 
@@ -16,9 +18,28 @@ class Camera {
     origin_ = {float(camera.from[0]), float(camera.from[1]), float(camera.from[2])};
     const Vec3 to{float(camera.to[0]), float(camera.to[1]), float(camera.to[2])};
     const Vec3 up{float(camera.up[0]), float(camera.up[1]), float(camera.up[2])};
-    forward_ = normalize(to - origin_);
-    right_ = normalize(cross(forward_, up));
-    up_ = cross(right_, forward_);
+    // The frame in float, as the reference images were made, wherever float's squared lengths are
+    // normal numbers; otherwise (a view direction of 1e-30, or a step that float cannot see at
+    // 1e12) in double from the scene's values, each vector scaled by its largest component first.
+    const auto normal = [](Vec3 v) {
+      const float squared = dot(v, v);
+      return squared >= FLT_MIN && squared <= FLT_MAX;
+    };
+    forward_ = to - origin_;
+    if (normal(forward_) && normal(cross(normalize(forward_), up))) {
+      forward_ = normalize(forward_);
+      right_ = normalize(cross(forward_, up));
+      up_ = cross(right_, forward_);
+    } else {
+      using V = io::Vec3d;
+      const auto crossed = [](V a, V b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+      const auto toFloat = [](V v) { return Vec3{float(v[0]), float(v[1]), float(v[2])}; };
+      const V forward = unitVector({camera.to[0] - camera.from[0], camera.to[1] - camera.from[1], camera.to[2] - camera.from[2]});
+      const V right = unitVector(crossed(forward, camera.up));
+      forward_ = toFloat(forward);
+      right_ = toFloat(right);
+      up_ = toFloat(crossed(right, forward));
+    }
     const float halfHeight = float(std::tan(camera.fovDegrees * std::numbers::pi / 360.0));
     right_ = (halfHeight * float(width) / float(height)) * right_;
     up_ = halfHeight * up_;

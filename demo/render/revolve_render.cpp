@@ -1,12 +1,15 @@
 // revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
 // ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
 // for comparison). Options and the scene format are documented in README.md.
+#include "common/command_line.h"
+#include "common/memory_check.h"
 #include "image_output.h"
+#include "io/output_set.h"
 #include "io/scene_file.h"
-#include "io/text_files.h"
 #include "progress.h"
 #include "renderer.h"
 #include "robot/picking.h"
+#include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
 
 #include <CLI/CLI.hpp>
@@ -45,7 +48,7 @@ scene::BuildSettings buildSettings(const Options& options) {
   return build;
 }
 
-void writeStats(const Options& options, const render::RenderSettings& settings, const scene::EmbreeScene& built,
+void writeStats(io::OutputSet& outputs, const Options& options, const render::RenderSettings& settings, const scene::EmbreeScene& built,
                 const render::RenderResult& result, std::size_t objects) {
   const std::uint64_t total = result.rays.camera + result.rays.bounce + result.rays.shadow;
   const Stats mibit = built.stats();
@@ -69,7 +72,7 @@ void writeStats(const Options& options, const render::RenderSettings& settings, 
   json["memory"] = {{"revolve_bytes", built.revolveBytes()}, {"embree_bytes", built.embreeBytes()},
                     {"embree_peak_bytes", built.embreePeakBytes()}};
   const std::string text = json.dump(2) + "\n";
-  io::writeFileAtomically(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+  outputs.write(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
 }
 
 // --pick X,Y: two whole numbers, a pixel of the width x height image.
@@ -111,9 +114,21 @@ void pickObject(const Options& options, const io::SceneDescription& description,
               picked->point.y, picked->point.z, picked->distance);
 }
 
+// The scene, with its warnings on stderr: points the profiles dropped, objects nothing can see.
+io::SceneDescription readScene(const Options& options) {
+  io::SceneDescription description = io::readScene(options.scene);
+  for (const io::SceneProfile& profile : description.profiles) {
+    for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  }
+  for (const std::string& warning : scene::degenerateObjectWarnings(description, true)) {
+    std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  }
+  return description;
+}
+
 void run(const Options& options) {
   if (!options.pick.empty()) {
-    const io::SceneDescription description = io::readScene(options.scene);
+    const io::SceneDescription description = readScene(options);
     const int width = options.width > 0 ? options.width : description.camera.width.value_or(640);
     const int height = options.height > 0 ? options.height : description.camera.height.value_or(480);
     pickObject(options, description, width, height);
@@ -122,12 +137,13 @@ void run(const Options& options) {
   const std::string output =
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
   render::imageFormatFor(output);  // an unknown extension fails before any work
-  const io::SceneDescription description = io::readScene(options.scene);
-  for (const io::SceneProfile& profile : description.profiles) {
-    for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
-  }
-  render::checkWritable(output);
-  if (!options.stats.empty()) render::checkWritable(options.stats);
+  const io::SceneDescription description = readScene(options);
+  // Every output is named now (its temporary made: the folder takes files), and none may be an input.
+  io::OutputSet outputs;
+  outputs.addInput("the scene file", options.scene);
+  for (const io::SceneProfile& profile : description.profiles) outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  outputs.add("-o", output);
+  if (!options.stats.empty()) outputs.add("--stats", options.stats);
 
   render::RenderSettings settings;
   settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
@@ -139,13 +155,22 @@ void run(const Options& options) {
   settings.integrator.depth = options.depth > 0 ? options.depth : (options.integrator == "whitted" ? 4 : 8);
   settings.integrator.shadows = !options.noShadows;
 
+  // The float image, OpenImageIO's copy of it and the converted one: 3 x 12 bytes a pixel.
+  app::requireMemory(36.0 * settings.width * settings.height,
+                     "an image of " + std::to_string(settings.width) + " x " + std::to_string(settings.height) + " pixels");
+
   const scene::EmbreeScene built(description, buildSettings(options));
   render::ProgressReport progress;
   const render::RenderResult result =
       render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
   progress.finish();
-  render::writeImage(output, result.image);
-  if (!options.stats.empty()) writeStats(options, settings, built, result, description.objects.size());
+  if (built.refusedRays() > 0) {
+    std::fprintf(stderr, "revolve-render: warning: %s: %llu rays fell outside Embree's range and were not traced\n", options.scene.c_str(),
+                 static_cast<unsigned long long>(built.refusedRays()));
+  }
+  render::writeImage(outputs.temporary(output), output, result.image);
+  if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size());
+  outputs.commit();
 }
 
 }  // namespace
@@ -154,16 +179,18 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{"Renders a scene of surfaces of revolution (JSON scene file) with path tracing or Whitted ray "
                "tracing through Embree, every surface traced exactly by revolve."};
-  app.add_option("scene", options.scene, "scene file (JSON)")->required();
-  app.add_option("-o,--output", options.output, "image to write: .png (8-bit sRGB) or .exr (linear half); default: <scene name>.png");
-  app.add_option("--width", options.width, "image width in pixels (default: the scene's camera.width, else 640)")->check(CLI::Range(1, 16384));
-  app.add_option("--height", options.height, "image height in pixels (default: camera.height, else 480)")->check(CLI::Range(1, 16384));
-  app.add_option("--spp", options.spp, "samples per pixel (default: camera.spp, else 16)")->check(CLI::Range(1, 1 << 20));
+  app.add_option("scene", options.scene, "scene file (JSON)")->required()->check(app::kNonEmpty);
+  app.add_option("-o,--output", options.output, "image to write: .png (8-bit sRGB) or .exr (linear half); default: <scene name>.png")
+      ->check(app::kNonEmpty);
+  app.add_option("--width", options.width, "image width in pixels (default: the scene's camera.width, else 640)")
+      ->check(app::wholeNumberIn(1, 16384));
+  app.add_option("--height", options.height, "image height in pixels (default: camera.height, else 480)")->check(app::wholeNumberIn(1, 16384));
+  app.add_option("--spp", options.spp, "samples per pixel (default: camera.spp, else 16)")->check(app::wholeNumberIn(1, 1 << 20));
   app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the paper's ray tracer")
       ->check(CLI::IsMember({"path", "whitted"}))
       ->capture_default_str();
   app.add_option("--depth", options.depth, "path: most surface hits a path has (default 8); whitted: ray levels, 1 = ray casting (default 4)")
-      ->check(CLI::Range(1, 64));
+      ->check(app::wholeNumberIn(1, 64));
   app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
   app.add_option("--geometry", options.geometry, "how surfaces of revolution are traced (mesh: tessellated with --slices)")
       ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
@@ -171,20 +198,22 @@ int main(int argc, char** argv) {
   app.add_option("--shell", options.shell, "MIBIT bounding shells")->check(CLI::IsMember({"cylinder", "cone", "hybrid"}))->capture_default_str();
   app.add_flag("--no-monotone-split", options.noMonotoneSplit, "MIBIT: refine each profile as one interval");
   app.add_flag("--no-range-search", options.noRangeSearch, "MIBIT: test every node's shell");
-  app.add_option("--subdivisions", options.subdivisions, "MIBIT leaves per monotone interval (0: one segment a leaf)")->capture_default_str();
-  app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")->check(CLI::Range(3u, 1u << 16))->capture_default_str();
-  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
-  app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")->capture_default_str();
-  app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
+  app.add_option("--subdivisions", options.subdivisions, "MIBIT leaves per monotone interval (0: one segment a leaf)")
+      ->check(app::wholeNumberIn<std::uint32_t>(0, UINT32_MAX))
+      ->capture_default_str();
+  app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")
+      ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 16))
+      ->capture_default_str();
+  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
+  app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")
+      ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))
+      ->capture_default_str();
+  app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory")->check(app::kNonEmpty);
   app.add_option("--pick", options.pick,
                  "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
-                 "its index, name, hit point and distance, or \"nothing\"");
-  CLI11_PARSE(app, argc, argv);
-  try {
-    run(options);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "revolve-render: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+                 "its index, name, hit point and distance, or \"nothing\"")
+      ->check(CLI::Validator([](std::string& value) { return value.empty() ? std::string("the value is empty; expected X,Y") : std::string(); },
+                             "X,Y"));
+  if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-render")) return *status;
+  return app::runTool("revolve-render", options.scene, [&] { run(options); });
 }

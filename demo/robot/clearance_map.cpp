@@ -90,7 +90,7 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
   rtcAttachGeometry(scene_.get(), boxes);
   rtcReleaseGeometry(boxes);
   rtcCommitScene(scene_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the obstacles' BVH");
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error(scene.file + ": Embree failed to build the obstacles' BVH");
 }
 
 ClearanceMap::~ClearanceMap() = default;

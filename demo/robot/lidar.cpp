@@ -6,7 +6,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -17,27 +20,29 @@ Lidar::Lidar(const scene::EmbreeScene& scene, const io::SensorDescription& senso
   for (const double e : sensor.elevations) elevations_.push_back({e, std::cos(e), std::sin(e)});
 }
 
-io::ScanTable Lidar::scan(std::span<const io::RobotPose> poses, int threads) const {
-  io::ScanTable table;
-  for (const Angle& a : azimuths_) table.azimuths.push_back(a.radians);
-  for (const Angle& e : elevations_) table.elevations.push_back(e.radians);
-  table.poses = poses.size();
-  const std::size_t columns = azimuths_.size(), rings = elevations_.size(), perPose = columns * rings;
-  table.beams.resize(poses.size() * perPose);
-  std::vector<SensorFrame> frames;
-  for (const io::RobotPose& pose : poses) frames.push_back(sensorFrame(sensor_.pose, pose));
+io::ScanLayout Lidar::layout(std::size_t poses) const {
+  io::ScanLayout layout;
+  for (const Angle& a : azimuths_) layout.azimuths.push_back(a.radians);
+  for (const Angle& e : elevations_) layout.elevations.push_back(e.radians);
+  layout.poses = poses;
+  return layout;
+}
 
+void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads, double* tracingSeconds) const {
+  const std::size_t columns = azimuths_.size(), rings = elevations_.size(), perPose = columns * rings;
+  const std::uint64_t total = std::uint64_t(poses.size()) * perPose;
   const float noReturn = std::numeric_limits<float>::infinity();
-  const auto traceBeam = [&](std::size_t index) noexcept {
-    const std::size_t pose = index / perPose, ring = (index % perPose) / columns, column = index % columns;
-    const SensorFrame& frame = frames[pose];
+
+  // Beam `index` (its number in the scan) from the frame of its pose.
+  const auto traceBeam = [&](std::uint64_t index, const SensorFrame& frame, io::BeamReturn& out) noexcept {
+    const std::uint64_t pose = index / perPose;
+    const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
     const Angle& a = azimuths_[column];
     const Angle& e = elevations_[ring];
     const Vec3d direction = frame.rotate({e.cosine * a.cosine, e.cosine * a.sine, e.sine});
     Ray ray;
     ray.origin = {float(frame.origin[0]), float(frame.origin[1]), float(frame.origin[2])};
     ray.direction = {float(direction[0]), float(direction[1]), float(direction[2])};
-    io::BeamReturn& out = table.beams[index];
     out = {noReturn, 0, 0, 0, -1};
     const std::optional<scene::RangeHit> hit = scene_.nearest(ray);
     if (!hit) return;
@@ -52,13 +57,55 @@ io::ScanTable Lidar::scan(std::span<const io::RobotPose> poses, int threads) con
     out = {float(range), float(frame.origin[0] + range * direction[0]), float(frame.origin[1] + range * direction[1]),
            float(frame.origin[2] + range * direction[2]), std::int32_t(hit->object)};
   };
+  // Beams [first, first + count) into `out`, on the arena's threads.
+  double tracing = 0;
+  const auto traceBlock = [&](std::uint64_t first, std::size_t count, std::vector<io::BeamReturn>& out) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t firstPose = first / perPose, lastPose = (first + count - 1) / perPose;
+    std::vector<SensorFrame> frames;
+    for (std::uint64_t p = firstPose; p <= lastPose; ++p) frames.push_back(sensorFrame(sensor_.pose, poses[p]));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const tbb::blocked_range<std::size_t>& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        traceBeam(first + i, frames[(first + i) / perPose - firstPose], out[i]);
+      }
+    });
+    tracing += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // one block at a time
+  };
+  if (total == 0) return;
 
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, table.beams.size(), 256), [&](const tbb::blocked_range<std::size_t>& block) {
-      for (std::size_t i = block.begin(); i != block.end(); ++i) traceBeam(i);
-    });
+    std::vector<io::BeamReturn> ready(std::min<std::uint64_t>(kBlockBeams, total)), next(ready.size());
+    std::uint64_t readyFirst = 0;
+    std::size_t readyCount = ready.size();
+    traceBlock(readyFirst, readyCount, ready);
+    for (;;) {
+      const std::uint64_t nextFirst = readyFirst + readyCount;
+      const std::size_t nextCount = std::size_t(std::min<std::uint64_t>(kBlockBeams, total - nextFirst));
+      tbb::task_group tracing;
+      if (nextCount > 0) tracing.run([&] { traceBlock(nextFirst, nextCount, next); });
+      try {
+        sink(readyFirst, std::span<const io::BeamReturn>(ready.data(), readyCount));
+      } catch (...) {
+        tracing.wait();
+        throw;
+      }
+      tracing.wait();
+      if (nextCount == 0) break;
+      std::swap(ready, next);
+      readyFirst = nextFirst;
+      readyCount = nextCount;
+    }
   });
+  if (tracingSeconds != nullptr) *tracingSeconds = tracing;
+}
+
+io::ScanTable Lidar::scan(std::span<const io::RobotPose> poses, int threads) const {
+  io::ScanTable table;
+  static_cast<io::ScanLayout&>(table) = layout(poses.size());
+  table.beams.resize(table.beamCount());
+  scan(poses, [&](std::uint64_t first, std::span<const io::BeamReturn> beams) { std::copy(beams.begin(), beams.end(), table.beams.begin() + first); },
+       threads);
   return table;
 }
 

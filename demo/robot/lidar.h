@@ -10,6 +10,8 @@
 #include "io/sensor_file.h"
 #include "scene/embree_scene.h"
 
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -20,8 +22,23 @@ class Lidar {
   // Keeps references to both: they must outlive the Lidar.
   Lidar(const scene::EmbreeScene& scene, const io::SensorDescription& sensor);
 
-  // Traces every beam of every pose on `threads` threads (0: all). The result does not depend on
-  // the thread count: each beam's noise comes from its own counter-based stream.
+  // Receives a scan's returns in beam order (io::ScanLayout), a block of consecutive beams at a
+  // time: `first` is the number of the block's first beam.
+  using Sink = std::function<void(std::uint64_t first, std::span<const io::BeamReturn> beams)>;
+  // Beams traced at a time: enough work for every thread, little memory (two blocks in flight).
+  static constexpr std::size_t kBlockBeams = std::size_t{1} << 16;
+
+  // The scan's layout for `poses` poses.
+  io::ScanLayout layout(std::size_t poses) const;
+
+  // Traces every beam of every pose on `threads` threads (0: all) and hands the returns to `sink`
+  // block by block, tracing the next block while `sink` takes one: memory does not depend on the
+  // number of poses. The result does not depend on the thread count: each beam's noise comes from
+  // its own counter-based stream. An exception from `sink` stops the scan and is rethrown.
+  // `tracingSeconds`, when given, receives the wall time spent tracing (the blocks' own time,
+  // which overlaps the sink's).
+  void scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads = 0, double* tracingSeconds = nullptr) const;
+  // The whole scan in memory (tests and the benchmark; the tool streams).
   io::ScanTable scan(std::span<const io::RobotPose> poses, int threads = 0) const;
 
   std::size_t beamsPerPose() const { return azimuths_.size() * elevations_.size(); }

@@ -7,31 +7,9 @@
 #include <vector>
 
 namespace revolve::robot {
-namespace {
-
-Matrix3 rotationOf(const io::SceneTransform& transform) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const auto& k = transform.rotateAxis;
-  return {Vec3d{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-          Vec3d{k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-          Vec3d{k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
-}
-
-}  // namespace
-
 Vec3d mapVector(const Matrix3& m, const Vec3d& v) {
   return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
           m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
-}
-
-Matrix3 linearPart(const io::SceneTransform& transform) {
-  const Matrix3 rotation = rotationOf(transform);
-  Matrix3 m;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[i][j] = rotation[i][j] * transform.scale[j];
-  }
-  return m;
 }
 
 std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
@@ -45,8 +23,8 @@ std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
 
 PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform) : shape_(&shape), translate_(transform.translate) {
   // The inverse of rotation * scale is scale^-1 * rotation^T.
-  linear_ = linearPart(transform);
-  const Matrix3 rotation = rotationOf(transform);
+  linear_ = io::linearPart(transform);
+  const Matrix3 rotation = io::rotationOf(transform);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) inverse_[i][j] = rotation[j][i] / transform.scale[i];
   }

@@ -21,8 +21,7 @@ namespace revolve::robot {
 
 using Matrix3 = std::array<Vec3d, 3>;
 
-// rotate(axis, degrees) * scale: the object-to-world linear map the scene builder uses, in double.
-Matrix3 linearPart(const io::SceneTransform& transform);
+// The object-to-world linear map, rotate(axis, degrees) * scale, is io::linearPart.
 Vec3d mapVector(const Matrix3& m, const Vec3d& v);
 
 // The meridian scale of an upright placement (the axis stays vertical: turned only about z, by no

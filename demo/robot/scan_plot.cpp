@@ -92,7 +92,7 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
   std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) { return a.top < b.top; });
 
   for (const io::SceneObject& object : scene.objects) {
-    const Matrix3 linear = linearPart(object.transform);
+    const Matrix3 linear = io::linearPart(object.transform);
     const auto& t = object.transform.translate;
     std::vector<Point> samples;
     constexpr int kAzimuths = 96;  // outlines within 0.05% of a circle's radius
@@ -128,24 +128,6 @@ std::filesystem::path plotterPath() {
   return self.parent_path() / "revolve-lidar-plot";
 }
 
-// A file in the system's temporary folder, removed when this goes out of scope.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const char* suffix) {
-    path_ = (std::filesystem::temp_directory_path() / ("revolve-lidar-plot-XXXXXX" + std::string(suffix))).string();
-    const int descriptor = mkstemps(path_.data(), int(std::strlen(suffix)));
-    if (descriptor < 0) throw std::runtime_error(path_ + ": cannot create a temporary file: " + std::strerror(errno));
-    close(descriptor);
-  }
-  ~TemporaryFile() { std::remove(path_.c_str()); }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
 // The last non-empty line of a file (what a failing Python program says last).
 std::string lastLine(const std::string& path) {
   std::ifstream in(path);
@@ -156,35 +138,31 @@ std::string lastLine(const std::string& path) {
   return last;
 }
 
-// Runs the plotter on `data`, its PNG on standard output going to `png`.
-void runPlotter(const nlohmann::json& data, std::FILE* png) {
-  const TemporaryFile input(".json"), messages(".log");
-  {
-    std::ofstream out(input.path());
-    out << data;
-    if (!out.flush()) throw std::runtime_error(input.path() + ": cannot write the plot's data");
-  }
-  std::fflush(png);
+// Runs the plotter on the data file `input`, its PNG on standard output going to `png`.
+void runPlotter(const std::string& input, std::FILE* png, const std::string& output) {
+  const io::ScratchFile messages(".log");
+  if (std::fflush(png) != 0) throw std::runtime_error(output + ": write failed: " + std::strerror(errno));
   const std::string plotter = plotterPath().string();
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, fileno(png), STDOUT_FILENO);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.path().c_str(), O_WRONLY | O_TRUNC, 0);
   std::string dash = "-";
-  std::string inputPath = input.path();
+  std::string inputPath = input;
   std::string program = plotter;
   char* argv[] = {program.data(), inputPath.data(), dash.data(), nullptr};
   pid_t child = 0;
   const int spawned = posix_spawn(&child, plotter.c_str(), &actions, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error("cannot run " + plotter + ": " + std::strerror(spawned));
+  if (spawned != 0) throw std::runtime_error(output + ": cannot run " + plotter + ": " + std::strerror(spawned));
+  const io::ChildRegistration terminateOnSignal(child);
   int status = 0;
   while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) throw std::runtime_error("cannot wait for " + plotter + ": " + std::strerror(errno));
+    if (errno != EINTR) throw std::runtime_error(output + ": cannot wait for " + plotter + ": " + std::strerror(errno));
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     const std::string said = lastLine(messages.path());
-    throw std::runtime_error("revolve-lidar-plot failed" + (said.empty() ? std::string() : ": " + said));
+    throw std::runtime_error(output + ": revolve-lidar-plot failed" + (said.empty() ? std::string() : ": " + said));
   }
 }
 
@@ -194,38 +172,83 @@ void checkPlotPath(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (extension != ".png") throw std::runtime_error(path + ": unsupported plot extension \"" + extension + "\"; the plot is a .png");
-  io::checkWritable(path);
   const std::filesystem::path plotter = plotterPath();
   if (access(plotter.c_str(), X_OK) != 0) {
     throw std::runtime_error(path + ": cannot plot: the plotter " + plotter.string() + " is missing or not executable");
   }
 }
 
-void writeScanPlot(const std::string& path, const ScanPlotInput& input) {
-  std::vector<SensorFrame> frames;
-  for (const io::RobotPose& pose : input.poses) frames.push_back(sensorFrame(input.sensor.pose, pose));
-  const double sensorHeight = frames.empty() ? 0.0 : frames.front().origin[2];
+struct ScanPlot::Data {
+  const io::SensorDescription& sensor;
+  std::span<const io::RobotPose> poses;
+  const io::ScanLayout& layout;
+  io::ScratchFile file{".json"};
+  std::FILE* out = nullptr;
+  std::int64_t pose = -1;      // the pose whose returns are being written
+  bool firstReturn = true;
 
-  nlohmann::json data = footprintOf(input.scene, sensorHeight);
-  data["poses"] = nlohmann::json::array();
-  const std::size_t beamsPerPose = input.scan.rings() * input.scan.azimuths.size();
-  for (std::size_t pose = 0; pose < input.scan.poses; ++pose) {
-    const Vec3d heading = frames[pose].rotate({1, 0, 0});
-    const double h = std::hypot(heading[0], heading[1]);  // zero for a sensor looking straight up or down
-    nlohmann::json returns = nlohmann::json::array();
-    for (std::size_t i = 0; i < beamsPerPose; ++i) {
-      const io::BeamReturn& b = input.scan.beams[pose * beamsPerPose + i];
-      if (!std::isinf(b.range)) returns.push_back({b.x, b.y});
-    }
-    data["poses"].push_back({{"origin", {frames[pose].origin[0], frames[pose].origin[1]}},
-                             {"heading", {h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0}},
-                             {"returns", std::move(returns)}});
+  Data(const io::SensorDescription& s, std::span<const io::RobotPose> p, const io::ScanLayout& l) : sensor(s), poses(p), layout(l) {}
+  ~Data() {
+    if (out != nullptr) std::fclose(out);
   }
+  void check() const {
+    if (std::ferror(out)) throw std::runtime_error(file.path() + ": cannot write the plot's data: " + std::strerror(errno));
+  }
+  // Closes the returns of the pose before and opens pose `next`'s entry.
+  void startPose(std::size_t next) {
+    if (pose >= 0) std::fputs("]},\n", out);
+    const SensorFrame frame = sensorFrame(sensor.pose, poses[next]);
+    const Vec3d heading = frame.rotate({1, 0, 0});
+    const double h = std::hypot(heading[0], heading[1]);  // zero for a sensor looking straight up or down
+    std::fprintf(out, "{\"origin\": [%.17g, %.17g], \"heading\": [%.17g, %.17g], \"returns\": [", frame.origin[0], frame.origin[1],
+                 h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0);
+    pose = std::int64_t(next);
+    firstReturn = true;
+  }
+};
+
+ScanPlot::ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor, std::span<const io::RobotPose> poses,
+                   const io::ScanLayout& layout)
+    : data_(std::make_unique<Data>(sensor, poses, layout)) {
+  data_->out = std::fopen(data_->file.path().c_str(), "w");
+  if (data_->out == nullptr) throw std::runtime_error(data_->file.path() + ": cannot write the plot's data: " + std::strerror(errno));
+  const double sensorHeight = poses.empty() ? 0.0 : sensorFrame(sensor.pose, poses.front()).origin[2];
+  nlohmann::json header = footprintOf(scene, sensorHeight);
   std::ostringstream title;
-  title << input.scene.file << ": " << input.scan.rings() << " x " << input.scan.azimuths.size() << " beams from "
-        << input.scan.poses << (input.scan.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
-  data["title"] = title.str();
-  io::writeFileAtomically(path, [&](std::FILE* png) { runPlotter(data, png); });
+  title << scene.file << ": " << layout.rings() << " x " << layout.azimuths.size() << " beams from " << layout.poses
+        << (layout.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
+  header["title"] = title.str();
+  std::string text = header.dump();
+  text.pop_back();  // the closing brace: the poses follow, as they are traced
+  std::fputs(text.c_str(), data_->out);
+  std::fputs(", \"poses\": [\n", data_->out);
+  data_->check();
+}
+
+ScanPlot::~ScanPlot() = default;
+
+void ScanPlot::add(std::uint64_t first, std::span<const io::BeamReturn> beams) {
+  Data& d = *data_;
+  const std::uint64_t perPose = d.layout.beamsPerPose();
+  for (std::size_t i = 0; i < beams.size(); ++i) {
+    const std::uint64_t pose = (first + i) / perPose;
+    while (d.pose < std::int64_t(pose)) d.startPose(std::size_t(d.pose + 1));
+    const io::BeamReturn& b = beams[i];
+    if (std::isinf(b.range)) continue;
+    std::fprintf(d.out, d.firstReturn ? "[%.9g, %.9g]" : ", [%.9g, %.9g]", b.x, b.y);
+    d.firstReturn = false;
+  }
+  d.check();
+}
+
+void ScanPlot::finish(io::OutputStream& png, const std::string& path) {
+  Data& d = *data_;
+  while (d.pose + 1 < std::int64_t(d.poses.size())) d.startPose(std::size_t(d.pose + 1));
+  std::fputs(d.pose >= 0 ? "]}]}\n" : "]}\n", d.out);
+  const bool closed = std::fclose(d.out) == 0;
+  d.out = nullptr;
+  if (!closed) throw std::runtime_error(d.file.path() + ": cannot write the plot's data: " + std::strerror(errno));
+  runPlotter(d.file.path(), png.file(), path);
 }
 
 }  // namespace revolve::robot

@@ -3,7 +3,8 @@
 // revolution as its outline seen from above with, for upright ones, its section at the first
 // pose's sensor height (what a 2-D scanner at that height sees); then every return's beam, the
 // returns, and each pose's sensor with its heading; axes in the scene's units (metres). This file
-// projects the scene; matplotlib draws it (demo/lidar/revolve_lidar_plot.py, run as a child process).
+// projects the scene; matplotlib draws it (demo/lidar/revolve_lidar_plot.py, run as a child process,
+// terminated if this process is interrupted).
 #pragma once
 
 #include "io/poses_file.h"
@@ -11,24 +12,40 @@
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
 
+#include "io/output_set.h"
+
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 
 namespace revolve::robot {
 
-struct ScanPlotInput {
-  const io::SceneDescription& scene;
-  const io::SensorDescription& sensor;
-  std::span<const io::RobotPose> poses;
-  const io::ScanTable& scan;
-};
-
-// Throws std::runtime_error naming the file unless it ends in .png (any case), its folder takes a
-// new file and the plotter is beside this program. Call before scanning so that a typo costs nothing.
+// Throws std::runtime_error naming the file unless it ends in .png (any case) and the plotter is
+// beside this program. Call before scanning so that a typo costs nothing.
 void checkPlotPath(const std::string& path);
 
-// Draws and writes the plot (through a temporary file renamed into place); std::runtime_error with
-// the plotter's last words when it fails (matplotlib missing, say).
-void writeScanPlot(const std::string& path, const ScanPlotInput& input);
+// A scan's plot, drawn as the scan is traced: the scene's footprint and then each pose's returns
+// go to a data file in the temporary folder as they come, so memory does not grow with the scan;
+// finish() runs the plotter on it.
+class ScanPlot {
+ public:
+  // Keeps references to all four: they must outlive it.
+  ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor, std::span<const io::RobotPose> poses,
+           const io::ScanLayout& layout);
+  ~ScanPlot();
+  ScanPlot(const ScanPlot&) = delete;
+  ScanPlot& operator=(const ScanPlot&) = delete;
+
+  // Beams `first`, `first` + 1, ... in beam order (io::ScanLayout).
+  void add(std::uint64_t first, std::span<const io::BeamReturn> beams);
+  // Runs the plotter, its PNG into `png` (the output `path`'s stream); std::runtime_error naming
+  // `path` with the plotter's last words when it fails (matplotlib missing, a full disk).
+  void finish(io::OutputStream& png, const std::string& path);
+
+ private:
+  struct Data;
+  std::unique_ptr<Data> data_;
+};
 
 }  // namespace revolve::robot

@@ -1,6 +1,8 @@
 #include "scene/embree_scene.h"
 
 #include "common/embree_rays.h"
+#include "common/memory_check.h"
+#include "common/ray_limits.h"
 #include "common/vector_math.h"
 
 #include <tbb/parallel_for.h>
@@ -57,7 +59,7 @@ Matrix3 inverse(const Matrix3& a) {
 }
 
 // rotate(axis, degrees) * scale, rounded to the floats Embree will use.
-Matrix3 linearPart(const io::SceneTransform& transform) {
+Matrix3 floatLinearPart(const io::SceneTransform& transform) {
   const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
   const double c = std::cos(theta), s = std::sin(theta);
   const auto& k = transform.rotateAxis;
@@ -159,6 +161,12 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       used.push_back(object.profile);
     }
   }
+  if (settings.mesh) {
+    double triangles = 0;
+    for (const std::size_t profile : used) triangles += 2.0 * double(description.profiles[profile].profile.segmentCount()) * settings.slices;
+    app::requireMemory(triangles * app::kMeshBytesPerTriangle,
+                       "--geometry mesh with " + std::to_string(settings.slices) + " slices (" + std::to_string(std::uint64_t(triangles)) + " triangles)");
+  }
   prototypes_.resize(used.size());
   tbb::parallel_for(std::size_t{0}, used.size(), [&](std::size_t i) {
     prototypes_[i] = std::make_unique<Prototype>(description.profiles[used[i]], device_.get(), settings);
@@ -171,8 +179,17 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     Instance instance;
     instance.prototype = std::uint32_t(prototypeOf[object.profile]);
     instance.material = std::uint32_t(object.material);
-    instance.linear = linearPart(object.transform);
+    instance.linear = floatLinearPart(object.transform);
     const Matrix3 inv = inverse(instance.linear);
+    // What the reader's limits on scales guarantee (common/ray_limits.h), checked here too for
+    // descriptions made in code: Embree's object-space rays stay within its range.
+    if (!(inv.infinityNorm() * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
+        !(instance.linear.infinityNorm() <= 3 * app::kMaxScale) ||
+        !(instance.linear.infinityNorm() * inv.infinityNorm() <= 3 * app::kMaxScaleRatio * (1 + 0x1p-20))) {
+      throw std::runtime_error(description.file + ": objects[" + std::to_string(i) +
+                               "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40], "
+                               "within a factor 2^16 of each other");
+    }
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) instance.normalMatrix.m[r][c] = inv.m[c][r];
     }
@@ -219,7 +236,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     rtcReleaseGeometry(triangles);
   }
   rtcCommitScene(top_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error(description.file + ": Embree failed to build the scene");
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -229,6 +246,10 @@ EmbreeScene::~EmbreeScene() {
 }
 
 std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
+  if (!app::embreeAccepts(ray)) {
+    refused_->fetch_add(1, std::memory_order_relaxed);
+    return std::nullopt;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit = app::embreeRayHit(ray);
@@ -238,6 +259,10 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
 }
 
 std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
+  if (!app::embreeAccepts(ray)) {
+    refused_->fetch_add(1, std::memory_order_relaxed);
+    return std::nullopt;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit = app::embreeRayHit(ray);
@@ -248,6 +273,10 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
+  if (!app::embreeAccepts(ray)) {
+    refused_->fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay shadow = app::embreeRayHit(ray).ray;

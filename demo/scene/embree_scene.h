@@ -57,6 +57,10 @@ class EmbreeScene {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
+  // Rays that break Embree's contract (common/ray_limits.h) are not traced: they miss, and are
+  // counted by refusedRays(). The readers' limits keep every ray a tool makes within it, so a
+  // tool reports a non-zero count as a fault rather than let Embree abort the process.
+  //
   // Nearest hit with tnear <= t <= tfar, or nothing. Thread-safe; never allocates, throws or locks.
   std::optional<WorldHit> intersect(const Ray& ray) const noexcept;
   // The same nearest hit, reduced to its t and object. Thread-safe; never allocates, throws or locks.
@@ -69,6 +73,7 @@ class EmbreeScene {
   // misses a nearby one.
   Vec3 spawn(const WorldHit& hit, Vec3 direction) const noexcept;
 
+  std::uint64_t refusedRays() const noexcept { return refused_->load(std::memory_order_relaxed); }
   Stats stats() const noexcept;               // MIBIT counters summed over every prototype
   std::size_t revolveBytes() const noexcept;  // Shapes and shading normals
   std::int64_t embreeBytes() const noexcept;  // Embree's own allocations now (its memory monitor)
@@ -87,6 +92,7 @@ class EmbreeScene {
     std::atomic<std::int64_t> current{0}, peak{0};
   };
   std::unique_ptr<MemoryCounter> memory_;  // outlives the device, which reports to it
+  std::unique_ptr<std::atomic<std::uint64_t>> refused_ = std::make_unique<std::atomic<std::uint64_t>>(0);
   app::Device device_;
   std::vector<std::unique_ptr<Prototype>> prototypes_;
   std::vector<Instance> instances_;

@@ -1,8 +1,11 @@
 // revolve-trace: the nearest hit of each ray of a file with a surface of revolution, traced through
 // Embree (rtcIntersect1 on a scene holding the shape), written as CSV. An interface other tools
 // depend on: its options and file formats are documented in README.md and kept exact.
+#include "common/command_line.h"
 #include "common/embree_handles.h"
 #include "common/embree_rays.h"
+#include "common/memory_check.h"
+#include "common/ray_limits.h"
 #include "io/text_files.h"
 
 #include <revolve/revolve.h>
@@ -85,6 +88,7 @@ std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>&
   std::vector<std::optional<Hit>> hits(rays.size());
   tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
     const Ray& ray = rays[i];
+    if (!app::embreeAccepts(ray)) return;  // unreachable: the reader keeps rays within +-2^60
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rayHit = app::embreeRayHit(ray);
@@ -107,12 +111,18 @@ BuildOptions buildOptions(const Options& options) {
 void run(const Options& options) {
   const Profile profile = loadProfile(options.profile);
   const std::vector<Ray> rays = io::readRaysCsv(options.rays);
+  io::OutputSet outputs;
+  outputs.addInput("the profile file (--profile)", options.profile);
+  outputs.addInput("the rays file (--rays)", options.rays);
+  outputs.add("--out", options.out);
   const app::Device device = app::newDevice();
   const app::Scene scene = app::newScene(device.get());
   const bool mesh = options.method == "mesh";
   std::optional<Shape> shape;
   std::optional<Geometry> geometry;
   if (mesh) {
+    app::requireMemory(2.0 * double(profile.segmentCount()) * options.slices * app::kMeshBytesPerTriangle,
+                       "--method mesh with " + std::to_string(options.slices) + " slices");
     RTCGeometry triangles = newTessellatedGeometry(device.get(), profile, options.slices);
     rtcAttachGeometry(scene.get(), triangles);
     rtcReleaseGeometry(triangles);
@@ -122,8 +132,10 @@ void run(const Options& options) {
     rtcAttachGeometry(scene.get(), geometry->handle());
   }
   rtcCommitScene(scene.get());
-  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
-  io::writeHitsCsv(options.out, traceAll(scene.get(), rays, profile, mesh, options.slices));
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error(options.profile + ": Embree failed to build the scene");
+  const std::vector<std::optional<Hit>> hits = traceAll(scene.get(), rays, profile, mesh, options.slices);
+  io::writeHitsCsv(outputs.stream(options.out), hits);
+  outputs.commit();
 }
 
 }  // namespace
@@ -133,10 +145,12 @@ int main(int argc, char** argv) {
   CLI::App app{"Traces each ray of a CSV file against a surface of revolution through Embree and writes the "
                "nearest hit of each."};
   app.add_option("--profile", options.profile, "profile CSV: optional header r,z; one point r,z per line")
-      ->required();
+      ->required()
+      ->check(app::kNonEmpty);
   app.add_option("--rays", options.rays, "rays CSV: optional header ox,oy,oz,dx,dy,dz,tnear,tfar; one ray per line")
-      ->required();
-  app.add_option("--out", options.out, "hits CSV to write: hit,t,nx,ny,nz,u,v per ray")->required();
+      ->required()
+      ->check(app::kNonEmpty);
+  app.add_option("--out", options.out, "hits CSV to write: hit,t,nx,ny,nz,u,v per ray")->required()->check(app::kNonEmpty);
   app.add_option("--method", options.method, "intersection method")
       ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
       ->capture_default_str();
@@ -145,16 +159,11 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--subdivisions", options.subdivisions,
                  "MIBIT leaves per monotone interval (0: one segment per leaf)")
+      ->check(app::wholeNumberIn<std::uint32_t>(0, UINT32_MAX))
       ->capture_default_str();
   app.add_option("--slices", options.slices, "azimuthal steps of the tessellated mesh (--method mesh)")
-      ->check(CLI::Range(3u, 1u << 24))
+      ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 24))
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-  try {
-    run(options);
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "revolve-trace: %s\n", error.what());
-    return 1;
-  }
-  return 0;
+  if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-trace")) return *status;
+  return app::runTool("revolve-trace", options.profile, [&] { run(options); });
 }

@@ -1,7 +1,8 @@
 // Fuzz target: a poses file (POSES.csv) as revolve-lidar and revolve-clearance read it. Expected:
-// an InputError with a one-line message, or at least one pose, every value finite, z = 0 where the
-// file gave none; the poses, written back as shortest round-trip text under the x,y,z,yaw header,
+// an InputError with a one-line message, or at least one pose, every value finite, x, y and z
+// within the coordinate limit (common/ray_limits.h), z = 0 where the file gave none; the poses, written back as shortest round-trip text under the x,y,z,yaw header,
 // read back bit for bit.
+#include "common/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/poses_file.h"
 #include "io/text_files.h"
@@ -28,6 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(!poses.empty());
   std::string again = "x,y,z,yaw\n";
   for (const io::RobotPose& p : poses) {
+    for (const double v : {p.x, p.y, p.z}) FUZZ_CHECK(std::abs(v) <= app::kMaxWorldCoordinate);
     for (const double v : {p.x, p.y, p.z, p.yaw}) {
       FUZZ_CHECK(std::isfinite(v));
       char buffer[32];

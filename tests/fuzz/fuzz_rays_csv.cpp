@@ -1,7 +1,12 @@
 // Fuzz target: a rays CSV as revolve-trace reads it.
 // Expected: InputError with a one-line message, or rays that keep the reader's promises: every
-// value finite except tfar (which may be +inf), a non-zero direction, 0 <= tnear <= tfar; and the
-// rays, written back as shortest round-trip text, read back bit for bit.
+// value finite except tfar (which may be +inf), a non-zero direction, 0 <= tnear <= tfar, origin
+// and direction within +-2^60; the rays, written back as shortest round-trip text, read back bit
+// for bit; and every ray traced through Embree as revolve-trace traces it (rtcIntersect1 on a scene
+// holding a revolve Geometry), where Embree aborts the process on a ray beyond its contract.
+#include "common/embree_handles.h"
+#include "common/embree_rays.h"
+#include "common/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/text_files.h"
 
@@ -37,6 +42,20 @@ std::string toCsv(const std::vector<Ray>& rays) {
   return text;
 }
 
+// A capped cylinder of radius 1 from z = 0 to 1 in a scene of its own, built once.
+RTCScene tracedScene() {
+  static const app::Device device = app::newDevice();
+  static const Shape shape{Profile(std::vector<Point2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}})};
+  static const Geometry geometry(device.get(), shape);
+  static const app::Scene scene = [] {
+    app::Scene built = app::newScene(device.get());
+    rtcAttachGeometry(built.get(), geometry.handle());
+    rtcCommitScene(built.get());
+    return built;
+  }();
+  return scene.get();
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -54,6 +73,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(std::isfinite(ray.tfar) || ray.tfar == INFINITY);
     FUZZ_CHECK(ray.direction.x != 0.0f || ray.direction.y != 0.0f || ray.direction.z != 0.0f);
     FUZZ_CHECK(0.0f <= ray.tnear && ray.tnear <= ray.tfar);
+    for (std::size_t i = 0; i < 6; ++i) FUZZ_CHECK(std::abs(double(fields[i])) <= Profile::kMaxCoordinate);
+    FUZZ_CHECK(app::embreeAccepts(ray));
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayHit = app::embreeRayHit(ray);
+    rtcIntersect1(tracedScene(), &context, &rayHit);
+    if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) FUZZ_CHECK(rayHit.ray.tfar >= ray.tnear && rayHit.ray.tfar <= ray.tfar);
   }
   const std::vector<Ray> again = io::parseRaysCsv(toCsv(rays), "again.csv");
   FUZZ_CHECK(again.size() == rays.size());

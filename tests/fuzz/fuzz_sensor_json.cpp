@@ -1,9 +1,11 @@
 // Fuzz target: a sensor file (SENSOR.json) as revolve-lidar reads it. Expected: a SensorError with
 // a one-line message, or a description that keeps the reader's promises (sample and channel counts
-// within their limits, angles finite and within their ranges, min <= max and a fan spanning at
+// within their limits, the position within the coordinate limit, angles finite and within their
+// ranges, min <= max and a fan spanning at
 // most a turn, range 0 <= min < max, resolution and stddev >= 0), whose beam angles (fanAngles)
 // run from min_angle to max_angle without going back. Anything else, or a sanitizer report, is a
 // finding.
+#include "common/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/sensor_file.h"
 
@@ -26,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const double turn = 2 * std::numbers::pi;
   for (const double a : {sensor.pose.yaw, sensor.pose.pitch, sensor.pose.roll}) FUZZ_CHECK(std::abs(a) <= turn);
-  for (const double p : sensor.pose.position) FUZZ_CHECK(std::isfinite(p));
+  for (const double p : sensor.pose.position) FUZZ_CHECK(std::abs(p) <= app::kMaxWorldCoordinate);
   const io::BeamFan& fan = sensor.horizontal;
   FUZZ_CHECK(fan.samples >= 1 && fan.samples <= io::kMaxHorizontalSamples);
   FUZZ_CHECK(fan.minAngle <= fan.maxAngle && fan.maxAngle - fan.minAngle <= turn);

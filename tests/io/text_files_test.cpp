@@ -22,7 +22,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <filesystem>
+#include <functional>
+#include <set>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace revolve::io {
@@ -176,12 +180,12 @@ TEST(ProfileCsv, ValuesAreReadAsDoubles) {
 
 TEST(ProfileCsv, EmptyFileHasNoPoints) {
   // Line 0: the problem is the file as a whole, not any one line.
-  EXPECT_THAT(profileError(""), AllOf(StartsWith("p.csv:0: "), HasSubstr("no profile points")));
-  EXPECT_THAT(profileError("\n \r\n\n"), AllOf(StartsWith("p.csv:0: "), HasSubstr("no profile points")));
+  EXPECT_THAT(profileError(""), AllOf(StartsWith("p.csv: "), HasSubstr("no profile points")));
+  EXPECT_THAT(profileError("\n \r\n\n"), AllOf(StartsWith("p.csv: "), HasSubstr("no profile points")));
 }
 
 TEST(ProfileCsv, HeaderAloneHasNoPoints) {
-  EXPECT_THAT(profileError("r,z\n"), AllOf(StartsWith("p.csv:0: "), HasSubstr("no profile points")));
+  EXPECT_THAT(profileError("r,z\n"), AllOf(StartsWith("p.csv: "), HasSubstr("no profile points")));
 }
 
 TEST(ProfileCsv, BinaryGarbageGivesOneShortPrintableLine) {
@@ -202,7 +206,7 @@ TEST(ProfileCsv, MissingFileIsNamedWithTheCause) {
   const ScratchDirectory directory;
   const std::string path = directory / "absent.csv";
   EXPECT_THAT(inputError([&] { readProfileCsv(path); }),
-              AllOf(StartsWith(path + ":0: "), HasSubstr("No such file or directory")));
+              AllOf(StartsWith(path + ": "), HasSubstr("No such file or directory")));
 }
 
 TEST(ProfileCsv, ReadsTheFileItIsGiven) {
@@ -216,12 +220,11 @@ TEST(ProfileCsv, ReadsTheFileItIsGiven) {
 }
 
 // A directory opens like a file but cannot be read; the readers must say so rather than see an
-// empty file (which for rays is valid: zero rays). Fails today: readTextFile returns "" for a
-// directory (reported; enable when fixed).
+// empty file (which for rays is valid: zero rays).
 TEST(ReadTextFile, DirectoryIsAnError) {
   const ScratchDirectory directory;
-  EXPECT_THAT(inputError([&] { readTextFile(directory.path().string()); }),
-              StartsWith(directory.path().string() + ":0: "));
+  EXPECT_THAT(inputError([&] { readTextFile(directory.path().string(), kMaxCsvFileBytes, "a CSV file"); }),
+              StartsWith(directory.path().string() + ": "));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -407,7 +410,7 @@ TEST(RaysCsv, MissingFileIsNamedWithTheCause) {
   const ScratchDirectory directory;
   // A path through a regular file: open fails with ENOTDIR, not ENOENT.
   const std::string path = directory.write("plain", "") + "/r.csv";
-  EXPECT_THAT(inputError([&] { readRaysCsv(path); }), AllOf(StartsWith(path + ":0: "), HasSubstr("Not a directory")));
+  EXPECT_THAT(inputError([&] { readRaysCsv(path); }), AllOf(StartsWith(path + ": "), HasSubstr("Not a directory")));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -599,6 +602,160 @@ TEST(HitsCsv, NineDigitsReadBackToTheSameFloat) {
     }
     EXPECT_EQ(next, values.size());
   }
+}
+
+}  // namespace
+}  // namespace revolve::io
+
+namespace revolve::io {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+using revolve::testing::ScratchDirectory;
+using revolve::testing::readWholeFile;
+
+std::string errorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// readTextFile: regular files only, within a limit; lines within a limit.
+
+TEST(ReadTextFile, OnlyARegularFileIsReadAndNothingElseBlocksOrGrows) {
+  const ScratchDirectory directory;
+  const std::string fifo = directory / "pipe";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // A FIFO with no writer would block an ordinary open; it is refused at once instead.
+  EXPECT_EQ(errorOf([&] { readTextFile(fifo, kMaxCsvFileBytes, "a CSV file"); }), fifo + ": is a FIFO (named pipe), not a regular file");
+  EXPECT_EQ(errorOf([&] { readTextFile("/dev/zero", kMaxCsvFileBytes, "a CSV file"); }), "/dev/zero: is a character device, not a regular file");
+  EXPECT_EQ(errorOf([&] { readTextFile(directory.path().string(), kMaxCsvFileBytes, "a CSV file"); }),
+            directory.path().string() + ": is a directory, not a regular file");
+}
+
+TEST(ReadTextFile, AFileOverItsLimitIsRefusedBeforeItIsRead) {
+  const ScratchDirectory directory;
+  const std::string exact = directory.write("exact.csv", std::string(100, 'x'));
+  EXPECT_EQ(readTextFile(exact, 100, "a test file"), std::string(100, 'x'));
+  const std::string over = directory.write("over.csv", std::string(101, 'x'));
+  EXPECT_EQ(errorOf([&] { readTextFile(over, 100, "a test file"); }), over + ": its 101 bytes is too large: a test file is read up to 100 bytes");
+  // Sparse: a terabyte that takes no disk, refused from its size alone.
+  const std::string huge = directory.write("huge.csv", "");
+  ASSERT_EQ(truncate(huge.c_str(), off_t{1} << 40), 0);
+  EXPECT_THAT(errorOf([&] { readTextFile(huge, kMaxCsvFileBytes, "a CSV file"); }),
+              AllOf(StartsWith(huge + ": its 1.1 TB"), HasSubstr("is too large: a CSV file is read up to 256 MiB")));
+}
+
+TEST(CsvLines, ALineOverTheLimitIsAnErrorNamingItsNumberBeforeItIsSplit) {
+  const std::string header = "ox,oy,oz,dx,dy,dz,tnear,tfar\n";
+  EXPECT_EQ(errorOf([&] { parseRaysCsv(header + std::string(kMaxCsvLineBytes + 1, ','), "r.csv"); }),
+            "r.csv:2: the line is 4097 bytes long; a line of these files holds at most 4096");
+  // At the limit the line is read (and judged by its fields).
+  EXPECT_THAT(errorOf([&] { parseRaysCsv(header + std::string(kMaxCsvLineBytes, ','), "r.csv"); }), HasSubstr("r.csv:2: expected 8"));
+  EXPECT_THAT(errorOf([&] { parseProfileCsv(std::string(5000, '7'), "p.csv"); }), StartsWith("p.csv:1: the line is 5000 bytes long"));
+}
+
+TEST(RaysCsv, CoordinatesBeyondTwoToTheSixtyAreRefusedWithTheLimit) {
+  // 2^60 = 1.152921504606846976e18; Embree asserts |x| <= 1.844e18.
+  EXPECT_EQ(parseRaysCsv("1.15e18,0,0,1,0,0,0,inf\n", "r.csv").size(), 1u);
+  EXPECT_EQ(errorOf([&] { parseRaysCsv("1.16e18,0,0,1,0,0,0,inf\n", "r.csv"); }),
+            "r.csv:1: ox = \"1.16e18\" is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and Embree accepts");
+  EXPECT_THAT(errorOf([&] { parseRaysCsv("0,0,0,1,0,-2e18,0,inf\n", "r.csv"); }), StartsWith("r.csv:1: dz = \"-2e18\" is beyond +-2^60"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// OutputSet: the outputs of one run, whole and together or not at all.
+
+TEST(OutputSet, NothingIsVisibleBeforeCommitAndEverythingAfter) {
+  const ScratchDirectory directory;
+  const std::string a = directory.write("a.txt", "old a"), b = directory / "b.txt";
+  OutputSet outputs;
+  outputs.add("--a", a);
+  outputs.add("--b", b);
+  outputs.stream(a).write("new a");
+  outputs.write(b, [](std::FILE* out) { std::fputs("new b", out); });
+  EXPECT_EQ(readWholeFile(a), "old a");
+  EXPECT_FALSE(std::filesystem::exists(b));
+  EXPECT_EQ(directory.entries().size(), 3u) << "a.txt and the two temporaries";
+  outputs.commit();
+  EXPECT_EQ(readWholeFile(a), "new a");
+  EXPECT_EQ(readWholeFile(b), "new b");
+  EXPECT_EQ(directory.entries(), (std::set<std::string>{"a.txt", "b.txt"}));
+}
+
+TEST(OutputSet, AnUncommittedSetLeavesEveryOutputAsItWas) {
+  const ScratchDirectory directory;
+  const std::string a = directory.write("a.txt", "old a"), b = directory / "b.txt";
+  {
+    OutputSet outputs;
+    outputs.add("--a", a);
+    outputs.add("--b", b);
+    outputs.stream(a).write(std::string(1 << 21, 'x'));  // beyond the stream's buffer: bytes on disk
+  }
+  EXPECT_EQ(readWholeFile(a), "old a");
+  EXPECT_EQ(directory.entries(), std::set<std::string>{"a.txt"});
+}
+
+TEST(OutputSet, RefusesEmptyNamesNonFilesInputsAndRepeatsByIdentity) {
+  const ScratchDirectory directory;
+  const std::string scene = directory.write("scene.json", "{}");
+  std::filesystem::create_hard_link(scene, directory / "hard.json");
+  std::filesystem::create_symlink("scene.json", directory / "soft.json");
+  std::filesystem::create_directory(directory / "folder");
+  OutputSet outputs;
+  outputs.addInput("the scene file", scene);
+  outputs.addInput("a missing file", directory / "absent.csv");  // ignored: it is no file
+  EXPECT_EQ(errorOf([&] { outputs.add("-o", ""); }), "-o: the file name is empty");
+  EXPECT_EQ(errorOf([&] { outputs.add("-o", directory / "folder"); }),
+            directory / "folder" + ": -o names a directory, not a regular file (an output is written beside it and renamed into place)");
+  EXPECT_THAT(errorOf([&] { outputs.add("-o", "/dev/null"); }), StartsWith("/dev/null: -o names a character device"));
+  for (const std::string& same : {scene, directory / "hard.json", directory / "soft.json", directory / "folder/../scene.json"}) {
+    EXPECT_EQ(errorOf([&] { outputs.add("--stats", same); }),
+              same + ": --stats names the same file as the scene file (an input); an output may not overwrite an input");
+  }
+  outputs.add("-o", directory / "out.png");
+  EXPECT_EQ(errorOf([&] { outputs.add("--stats", directory / "./out.png"); }),
+            directory / "./out.png" + ": --stats names the same file as -o (" + directory / "out.png" + "); each output needs a file of its own");
+  outputs.add("--csv", directory / "absent.csv");
+}
+
+// When a rename fails part-way (here the second output's path became a directory meanwhile), the
+// output already renamed is put back as it was, and no temporary or backup remains.
+TEST(OutputSet, AFailedRenamePutsBackTheOutputsAlreadyReplaced) {
+  const ScratchDirectory directory;
+  const std::string a = directory.write("a.txt", "old a"), c = directory / "c.txt", b = directory / "b.txt";
+  OutputSet outputs;
+  outputs.add("--a", a);
+  outputs.add("--c", c);
+  outputs.add("--b", b);
+  outputs.stream(a).write("new a");
+  outputs.stream(c).write("new c");
+  outputs.stream(b).write("new b");
+  std::filesystem::create_directory(b);
+  std::filesystem::create_directory(b + "/inside");  // rename(2) replaces only an empty directory
+  EXPECT_THAT(errorOf([&] { outputs.commit(); }),
+              AllOf(StartsWith(b + ": cannot replace: "), HasSubstr("(the outputs written before it were put back)")));
+  EXPECT_EQ(readWholeFile(a), "old a");
+  EXPECT_FALSE(std::filesystem::exists(c));
+  EXPECT_EQ(directory.entries(), (std::set<std::string>{"a.txt", "b.txt"}));
+}
+
+// An injected writer on a full device: /dev/full fails every write with ENOSPC.
+TEST(OutputStream, AFullDiskIsOneErrorNamingTheOutputAtTheFirstFailedWrite) {
+  std::FILE* full = std::fopen("/dev/full", "w");
+  ASSERT_NE(full, nullptr);
+  std::setvbuf(full, nullptr, _IONBF, 0);
+  OutputStream out(full, "scan.pcd");
+  EXPECT_EQ(errorOf([&] { out.write("a point"); }), "scan.pcd: write failed: No space left on device");
+  EXPECT_EQ(errorOf([&] { out.print("%d", 42); }), "scan.pcd: write failed: No space left on device");
+  std::fclose(full);
 }
 
 }  // namespace

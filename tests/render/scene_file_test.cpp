@@ -8,6 +8,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 namespace revolve {
@@ -67,6 +68,39 @@ TEST(SceneFileTest, TheValidSceneReadsWithEveryPart) {
   EXPECT_EQ(scene.objects[1].profile, 1u);  // "bottle", from the CSV
   EXPECT_EQ(scene.quads.size(), 1u);
   EXPECT_EQ(scene.lights.size(), 1u);
+}
+
+// Directions read from the file are scaled by their largest component before they are normalised,
+// so that one of 1e-200 (or a subnormal) is as good as one of 1: rotation axes, the camera's up,
+// the sun's direction.
+TEST(SceneFileTest, TinyDirectionsNormaliseAsUnitOnes) {
+  std::string text = testing::replaced(testing::kScene, "[1, 0, 0, 10]", "[1e-200, 0, 0, 10]");
+  text = testing::replaced(text, R"("up": [0, 0, 1])", R"("up": [0, 0, 5e-324])");
+  text = testing::replaced(text, R"("direction": [0, 0.3, -1])", R"("direction": [0, 3e-301, -1e-300])");
+  text = testing::replaced(text, R"("profile": "ball", "material": "white")",
+                           R"("profile": "ball", "material": "white", "rotate": [1e300, 1e300, 0, 90])");
+  const testing::ScratchDirectory dir;
+  dir.write("bottle.csv", testing::kBottleCsv);
+  const io::SceneDescription scene = io::parseScene(text, "scene.json", dir.path().string());
+  EXPECT_EQ(scene.objects[1].transform.rotateAxis, (io::Vec3d{1, 0, 0}));
+  EXPECT_EQ(scene.camera.up, (io::Vec3d{0, 0, 1}));
+  const double n = std::sqrt(0.3 * 0.3 + 1);
+  EXPECT_NEAR(scene.lights[0].direction[1], 0.3 / n, 1e-15);
+  EXPECT_NEAR(scene.lights[0].direction[2], -1 / n, 1e-15);
+  EXPECT_NEAR(scene.objects[0].transform.rotateAxis[0], std::sqrt(0.5), 1e-15);  // 1e300 squared would overflow
+  EXPECT_NEAR(scene.objects[0].transform.rotateAxis[1], std::sqrt(0.5), 1e-15);
+}
+
+// The limits at their edges: 2^40 is a position, a hair beyond is not; 2^-16 and 2^40 are scales.
+TEST(SceneFileTest, TheLimitsAcceptTheirEdges) {
+  std::string text = testing::replaced(testing::kScene, R"("from": [0, -3, 1])", R"("from": [0, -1099511627776, 1])");
+  text = testing::replaced(text, R"("scale": 0.5)", R"("scale": [1.52587890625e-05, 1, 1])");
+  const testing::ScratchDirectory dir;
+  dir.write("bottle.csv", testing::kBottleCsv);
+  const std::string folder = dir.path().string();
+  EXPECT_EQ(io::parseScene(text, "scene.json", folder).objects.size(), 2u);
+  EXPECT_THROW(io::parseScene(testing::replaced(text, "-1099511627776", "-1099511627777"), "scene.json", folder), io::SceneError);
+  EXPECT_THROW(io::parseScene(testing::replaced(text, "1.52587890625e-05", "1.5258789e-05"), "scene.json", folder), io::SceneError);
 }
 
 }  // namespace

@@ -34,10 +34,10 @@ struct BadPoses {
 
 // Every rule, one case each (in one test: a process per case costs seconds under the sanitizers).
 TEST(PosesFileTest, EachRuleNamesTheLineAndTheRule) {
-  const std::vector<BadPoses> cases{BadPoses{"Empty", "\n\n", "p.csv:0: empty: expected the header"},
+  const std::vector<BadPoses> cases{BadPoses{"Empty", "\n\n", "p.csv: empty: expected the header"},
                       BadPoses{"NoHeader", "1,2,0,0\n", "p.csv:1: header \"1,2,0,0\" is not \"x,y,z,yaw\" or \"x,y,yaw\""},
                       BadPoses{"WrongHeader", "x,y,theta\n1,2,0\n", "p.csv:1: header \"x,y,theta\" is not"},
-                      BadPoses{"HeaderOnly", "x,y,yaw\n", "p.csv:0: no poses after the header"},
+                      BadPoses{"HeaderOnly", "x,y,yaw\n", "p.csv: no poses after the header"},
                       BadPoses{"TooFewValues", "x,y,z,yaw\n1,2,3,4\n1,2,3\n", "p.csv:3: expected 4 comma-separated values (x,y,z,yaw), found 3"},
                       BadPoses{"NotANumber", "x,y,yaw\n1,two,0\n", "p.csv:2: y = \"two\" is not a number"},
                       BadPoses{"EmptyX", "x,y,yaw\n,2,0\n", "p.csv:2: x = \"\" is not a number"},

@@ -171,7 +171,7 @@ std::vector<BadRun> badLidarRuns() {
       {"OutputExtension", txt, R"(scan.txt: unsupported scan extension ".txt"; use .csv)"},
       {"OutputFolderMissing", pcdElsewhere, "no/such/folder/scan.pcd: cannot create a file there"},
       {"PlotExtension", plotJpg, R"(scan.jpg: unsupported plot extension ".jpg")"},
-      {"ThreadsZero", threadsZero, "--threads: Value 0 not in range"},
+      {"ThreadsZero", threadsZero, "--threads: 0 is out of range: it must lie in [1, 1024] (see --help)"},
   };
 }
 

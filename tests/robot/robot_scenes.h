@@ -38,7 +38,7 @@ inline io::SceneDescription sceneOf(const std::vector<PlacedProfile>& objects, c
   for (std::size_t i = 0; i < objects.size(); ++i) {
     std::string name = "p";  // appended: GCC 12 warns falsely (-Wrestrict) on "p" + string
     name += std::to_string(i);
-    scene.profiles.push_back({name, Profile(objects[i].points), ShadingNormals::kDefaultCreaseDegrees, {}});
+    scene.profiles.push_back({name, Profile(objects[i].points), ShadingNormals::kDefaultCreaseDegrees, {}, {}});
     scene.objects.push_back({objects[i].name, i, 0, objects[i].transform});
   }
   for (const auto& corners : quads) scene.quads.push_back({corners, 0});

@@ -8,9 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <sstream>
+#include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace revolve::io {
@@ -129,6 +132,70 @@ TEST(ScanFilesTest, PcdIsAnOrganisedCloudThatReadsBack) {
     EXPECT_EQ(std::stof(f[2]), beam.z);
     EXPECT_EQ(std::stof(f[3]), beam.range);
     EXPECT_EQ(std::stoi(f[5]), beam.object);
+  }
+}
+
+// DATA binary as PCL reads it (pcl::PCDReader, readBodyBinary): after the header's DATA line, the
+// points back to back, each its fields in FIELDS order at their SIZEs, no padding (point_step = 4 +
+// 4 + 4 + 4 + 2 + 4 = 22), in the machine's byte order.
+TEST(ScanFilesTest, BinaryPcdHoldsEveryPointInPclsPackedLayout) {
+  const ScratchDirectory dir;
+  const ScanTable scan = sampleScan();
+  writeScan(dir / "scan.pcd", scan, PcdData::binary);
+  const std::string cloud = readWholeFile(dir / "scan.pcd");
+  const std::size_t data = cloud.find("DATA binary\n");
+  ASSERT_NE(data, std::string::npos);
+  EXPECT_NE(cloud.find("\nSIZE 4 4 4 4 2 4\nTYPE F F F F U I\n"), std::string::npos);
+  EXPECT_NE(cloud.find("\nWIDTH 3\nHEIGHT 4\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\n"), std::string::npos);
+  const std::string points = cloud.substr(data + 12);
+  ASSERT_EQ(points.size(), 12u * 22);
+  for (std::size_t point = 0; point < 12; ++point) {
+    const char* at = points.data() + 22 * point;
+    float x, y, z, range;
+    std::uint16_t ring;
+    std::int32_t object;
+    std::memcpy(&x, at, 4);
+    std::memcpy(&y, at + 4, 4);
+    std::memcpy(&z, at + 8, 4);
+    std::memcpy(&range, at + 12, 4);
+    std::memcpy(&ring, at + 16, 2);
+    std::memcpy(&object, at + 18, 4);
+    const std::size_t row = point / 3, column = point % 3;
+    const BeamReturn& beam = scan.at(row / 2, row % 2, column);
+    EXPECT_EQ(ring, row % 2);
+    if (std::isinf(beam.range)) {
+      EXPECT_TRUE(std::isnan(x) && std::isnan(y) && std::isnan(z) && std::isnan(range));
+      EXPECT_EQ(object, -1);
+      continue;
+    }
+    EXPECT_EQ(x, beam.x);
+    EXPECT_EQ(y, beam.y);
+    EXPECT_EQ(z, beam.z);
+    EXPECT_EQ(range, beam.range);
+    EXPECT_EQ(object, beam.object);
+  }
+}
+
+// A scan written block by block, split anywhere (inside a row, across poses), is the same file as
+// the whole table written at once.
+TEST(ScanFilesTest, WritingInBlocksGivesTheSameFile) {
+  const ScratchDirectory dir;
+  const ScanTable scan = sampleScan();
+  for (const auto& [name, format, data] : {std::tuple{"scan.csv", ScanFormat::csv, PcdData::ascii},
+                                           std::tuple{"scan.pcd", ScanFormat::pcd, PcdData::ascii},
+                                           std::tuple{"binary.pcd", ScanFormat::pcd, PcdData::binary}}) {
+    SCOPED_TRACE(name);
+    writeScan(dir / name, scan, data);
+    const std::string blocks = dir / (std::string("blocks-") + name);
+    OutputSet outputs;
+    outputs.add("", blocks);
+    ScanWriter writer(outputs.stream(blocks), format, data, scan);
+    const std::span<const BeamReturn> beams(scan.beams);
+    writer.write(0, beams.subspan(0, 5));
+    writer.write(5, beams.subspan(5, 1));
+    writer.write(6, beams.subspan(6));
+    outputs.commit();
+    EXPECT_EQ(readWholeFile(blocks), readWholeFile(dir / name));
   }
 }
 

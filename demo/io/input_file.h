@@ -1,0 +1,38 @@
+// Reading the tools' input files within limits: only a regular file is read (a FIFO, a device
+// such as /dev/zero or /dev/urandom, a directory or a socket is refused by name before any byte is
+// read, so nothing can hang or grow without end), and no file larger than the limit of its kind.
+// Errors are InputErrors: one line naming the file (and the line, where there is one).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace revolve::io {
+
+// "file:line: problem", or "file: problem" for a problem with the whole file (line 0).
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string_view file, std::size_t line, const std::string& problem);
+};
+
+// JSON files (scenes, sensors): 64 MiB, a hundred times the largest bundled scene (3,000
+// objects in 0.46 MB), because the parsed tree takes about ten times its text.
+inline constexpr std::uint64_t kMaxJsonFileBytes = std::uint64_t{1} << 26;
+// CSV files (profiles, rays, poses): 256 MiB, about 6 million rays or 10 hours of poses at 100 Hz.
+inline constexpr std::uint64_t kMaxCsvFileBytes = std::uint64_t{1} << 28;
+// One CSV line: 4 KiB. The longest a format needs is a ray's 8 numbers, a few hundred bytes even
+// with every digit a double can carry; a longer line is not one of these files.
+inline constexpr std::size_t kMaxCsvLineBytes = 4096;
+
+// The whole contents of the regular file at `path`, if it holds at most `maxBytes`; InputError
+// otherwise (missing, unreadable, not a regular file, too large: "its 80 MB is too large: `kind`
+// is read up to 64 MiB", kind such as "a JSON file").
+std::string readTextFile(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+
+// Bytes as a short human figure for messages ("64 MiB", "1.5 GB").
+std::string byteCount(std::uint64_t bytes);
+
+}  // namespace revolve::io

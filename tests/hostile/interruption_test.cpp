@@ -1,0 +1,191 @@
+// Interruption and failure part-way, the tools run as processes: SIGTERM and SIGINT in the middle
+// of a run remove every temporary (beside the outputs and in TMPDIR) and exit 143 and 130; a failure
+// after a first output was written (the plotter's) leaves no output at all; a full disk (a file-size
+// limit, and a real full tmpfs where one can be mounted) gives one line naming the output, status 1,
+// and no partial file; a scan's memory does not grow with its number of poses.
+#include "hostile_fixtures.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace revolve {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+using testing::kPoleScene;
+using testing::kSpinningSensor;
+using testing::lineCount;
+using testing::ProcessOptions;
+using testing::ProcessResult;
+using testing::readWholeFile;
+using testing::RunningProcess;
+using testing::runProcess;
+using testing::ScratchDirectory;
+
+const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH;
+
+// Waits (up to 30 s) until `dir` holds a file whose name starts with `prefix` and that has at least
+// `bytes`: the tool is then writing it.
+bool waitForFile(const ScratchDirectory& dir, const std::string& prefix, std::uintmax_t bytes, RunningProcess& process) {
+  for (int i = 0; i < 3000; ++i) {
+    for (const std::string& name : dir.entries()) {
+      std::error_code code;
+      if (name.rfind(prefix, 0) == 0 && std::filesystem::file_size(dir / name, code) >= bytes && !code) return true;
+    }
+    if (process.ended()) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+TEST(Signals, ALidarRunStoppedWhileWritingLeavesNoTemporaryAndExits128PlusTheSignal) {
+  for (const auto& [signal, status] : {std::pair{SIGTERM, 143}, std::pair{SIGINT, 130}}) {
+    SCOPED_TRACE(signal == SIGTERM ? "SIGTERM" : "SIGINT");
+    const ScratchDirectory dir, temporary;
+    dir.write("scene.json", kPoleScene);
+    dir.write("sensor.json", kSpinningSensor);
+    dir.write("poses.csv", testing::manyPoses(2000));  // 57.6 million beams: many seconds of work
+    dir.write("scan.pcd", "an existing scan");
+    const std::set<std::string> before = dir.entries();
+    RunningProcess lidar(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--plot", "scan.png"},
+                         ProcessOptions{dir.path().string(), {"TMPDIR=" + temporary.path().string()}, -1});
+    ASSERT_TRUE(waitForFile(dir, "scan.pcd.tmp-", 1 << 20, lidar)) << "the scan never started: " << lidar.errSoFar();
+    EXPECT_FALSE(temporary.entries().empty()) << "the plot's data is being written to TMPDIR";
+    lidar.signal(signal);
+    const ProcessResult result = lidar.finish(30);
+    EXPECT_EQ(result.status, status) << result.err;
+    EXPECT_EQ(dir.entries(), before) << "a temporary was left beside the output";
+    EXPECT_EQ(readWholeFile(dir / "scan.pcd"), "an existing scan");
+    EXPECT_TRUE(temporary.entries().empty()) << "a temporary was left in TMPDIR";
+  }
+}
+
+TEST(Signals, ARenderStoppedMidwayLeavesNoTemporaryAndExits143) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  const std::set<std::string> before = dir.entries();
+  RunningProcess render(kRender, {"scene.json", "-o", "out.png", "--width", "640", "--height", "480", "--spp", "4096"},
+                        ProcessOptions{dir.path().string(), {}, -1});
+  ASSERT_TRUE(waitForFile(dir, "out.png.tmp-", 0, render)) << render.errSoFar();
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // into the rendering
+  render.signal(SIGTERM);
+  const ProcessResult result = render.finish(30);
+  EXPECT_EQ(result.status, 143) << result.err;
+  EXPECT_EQ(dir.entries(), before);
+}
+
+// The scan is complete before the plot is drawn; when the plotter then fails (here: a matplotlib
+// that cannot be imported, put first on its PYTHONPATH), neither output is written.
+TEST(AllOrNone, APlotThatFailsAfterTheScanLeavesNoScanEither) {
+  const ScratchDirectory dir, python;
+  std::filesystem::create_directory(python / "matplotlib");
+  python.write("matplotlib/__init__.py", "raise ImportError('injected failure')\n");
+  dir.write("scene.json", kPoleScene);
+  dir.write("sensor.json", testing::kPlanarSensor);
+  dir.write("old.csv", "an existing scan");
+  const std::set<std::string> before = dir.entries();
+  for (const char* output : {"old.csv", "new.csv"}) {
+    const ProcessResult run =
+        runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "-o", output, "--plot", "plot.png"},
+                   ProcessOptions{dir.path().string(), {"PYTHONPATH=" + python.path().string()}, -1}, 60);
+    EXPECT_EQ(run.status, 1) << run.err;
+    EXPECT_EQ(lineCount(run.err), 1u) << run.err;
+    EXPECT_THAT(run.err, StartsWith("revolve-lidar: plot.png: revolve-lidar-plot failed: "));
+    EXPECT_THAT(run.err, HasSubstr("injected failure"));
+    EXPECT_EQ(dir.entries(), before) << output;
+    EXPECT_EQ(readWholeFile(dir / "old.csv"), "an existing scan");
+  }
+}
+
+// A write that fails part-way, as on a full disk: here the kernel's file-size limit (EFBIG).
+TEST(FullDisk, AFailedWriteIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  dir.write("sensor.json", kSpinningSensor);
+  dir.write("poses.csv", testing::manyPoses(40));  // 25 MB of binary PCD
+  dir.write("scan.pcd", "an existing scan");
+  dir.write("image.exr", "an existing image");
+  const std::set<std::string> before = dir.entries();
+  const ProcessResult lidar = runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd",
+                                                  "--pcd-data", "binary"},
+                                         ProcessOptions{dir.path().string(), {}, 1 << 20}, 60);
+  EXPECT_EQ(lidar.status, 1);
+  EXPECT_EQ(lidar.err, "revolve-lidar: scan.pcd: write failed: File too large\n");
+  const ProcessResult render = runProcess(kRender, {"scene.json", "-o", "image.exr", "--width", "256", "--height", "192"},
+                                          ProcessOptions{dir.path().string(), {}, 4096}, 60);
+  EXPECT_EQ(render.status, 1);
+  EXPECT_EQ(lineCount(render.err), 1u) << render.err;
+  EXPECT_THAT(render.err, StartsWith("revolve-render: image.exr: write failed: "));
+  EXPECT_EQ(dir.entries(), before) << "a partial file or a temporary was left";
+  EXPECT_EQ(readWholeFile(dir / "scan.pcd"), "an existing scan");
+  EXPECT_EQ(readWholeFile(dir / "image.exr"), "an existing image");
+}
+
+// The same on a file system that is really full: a 256 KiB tmpfs mounted in a private mount
+// namespace (root or user namespaces needed; skipped where neither is available).
+TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  dir.write("sensor.json", kSpinningSensor);
+  dir.write("poses.csv", testing::manyPoses(40));
+  std::filesystem::create_directory(dir / "full");
+  const std::string script =
+      "mount -t tmpfs -o size=256k revolve-full full 2>/dev/null || exit 77\n"
+      "printf 'an existing scan' > full/scan.pcd\n"
+      "\"$1\" scene.json --sensor sensor.json --poses poses.csv -o full/scan.pcd --pcd-data binary\n"
+      "status=$?\n"
+      "ls -A full; cat full/scan.pcd; exit $status\n";
+  ProcessResult run = runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kLidar},
+                                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
+    run = runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kLidar},
+                     ProcessOptions{dir.path().string(), {}, -1}, 60);
+  }
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(run.err, "revolve-lidar: full/scan.pcd: write failed: No space left on device\n");
+  EXPECT_EQ(run.out, "scan.pcd\nan existing scan") << "only the old scan, as it was";
+}
+
+// The scan is streamed: 40 poses take no more memory than 4 (the whole table of 36 more poses
+// would be 36 x 28,800 beams x 20 bytes = 20 MB), and the binary PCD holds every point in PCL's
+// 22-byte layout.
+TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  dir.write("sensor.json", kSpinningSensor);
+  long peak[2] = {0, 0};
+  const int poses[2] = {4, 40};
+  // Under AddressSanitizer, freed blocks wait in a quarantine (they would count as growth): off.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  const std::string asanOptions = "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
+  for (int i = 0; i < 2; ++i) {
+    dir.write("poses.csv", testing::manyPoses(poses[i]));
+    const ProcessResult run = runProcess(REVOLVE_PEAK_MEMORY_PATH,
+                                         {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o",
+                                          "scan.pcd", "--pcd-data", "binary"},
+                                         ProcessOptions{dir.path().string(), {asanOptions}, -1}, 60);
+    ASSERT_EQ(run.status, 0) << run.err;
+    peak[i] = std::stol(readWholeFile(dir / "peak.txt"));
+    std::filesystem::remove(dir / "peak.txt");
+    const std::string cloud = readWholeFile(dir / "scan.pcd");
+    const std::size_t data = cloud.find("DATA binary\n");
+    ASSERT_NE(data, std::string::npos);
+    EXPECT_EQ(cloud.size() - (data + 12), std::size_t(poses[i]) * 28800 * 22);
+  }
+  const long tableKb = 36L * 28800 * 20 / 1024;
+  EXPECT_LT(peak[1] - peak[0], tableKb / 4) << "peaks " << peak[0] << " KB and " << peak[1] << " KB";
+  EXPECT_GT(peak[0], 1000) << "a peak was measured";
+}
+
+}  // namespace
+}  // namespace revolve

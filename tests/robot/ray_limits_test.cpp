@@ -1,0 +1,113 @@
+// Embree's ray contract in process: app::embreeAccepts is Embree 3's RayK::valid() (kernels/common/
+// ray.h: every component of org and dir within FLT_LARGE = 1.844e18, tnear and tfar not NaN);
+// EmbreeScene refuses a description made in code whose transform would carry rays beyond it, and
+// counts and misses a ray beyond it rather than let Embree abort the process. And the warnings for
+// objects that show nothing: one per object, for exactly the cases they name.
+#include "common/ray_limits.h"
+#include "robot_scenes.h"
+#include "scene/degenerate_objects.h"
+#include "scene/embree_scene.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace revolve {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::at;
+using testing::cylinderProfile;
+using testing::sceneOf;
+using testing::sphereProfile;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+
+TEST(RayLimitsTest, EmbreeAcceptsIsRayValidAtItsEdges) {
+  const float large = 1.844e18f, beyond = std::nextafter(large, kInf);
+  const auto ray = [](Vec3 o, Vec3 d, float tnear = 0, float tfar = kInf) { return Ray{o, d, tnear, tfar}; };
+  EXPECT_TRUE(app::embreeAccepts(ray({large, -large, 0}, {0, 0, large})));
+  EXPECT_FALSE(app::embreeAccepts(ray({beyond, 0, 0}, {1, 0, 0})));
+  EXPECT_FALSE(app::embreeAccepts(ray({0, 0, -beyond}, {1, 0, 0})));
+  EXPECT_FALSE(app::embreeAccepts(ray({0, 0, 0}, {0, beyond, 0})));
+  EXPECT_FALSE(app::embreeAccepts(ray({kNan, 0, 0}, {1, 0, 0})));
+  EXPECT_FALSE(app::embreeAccepts(ray({0, 0, 0}, {kInf, 0, 0})));
+  EXPECT_FALSE(app::embreeAccepts(ray({0, 0, 0}, {1, 0, 0}, kNan)));
+  EXPECT_FALSE(app::embreeAccepts(ray({0, 0, 0}, {1, 0, 0}, 0, kNan)));
+  EXPECT_TRUE(app::embreeAccepts(ray({0, 0, 0}, {1, 0, 0}, 0, kInf)));
+  EXPECT_TRUE(app::embreeAccepts(ray({0, 0, 0}, {0, 0, 0})));  // Embree's contract allows it; revolve misses it
+}
+
+TEST(RayLimitsTest, ADescriptionMadeInCodeWithATransformBeyondEmbreesRangeIsRefused) {
+  io::SceneTransform tiny = at(0, 0);
+  tiny.scale = {1e-20, 1, 1};
+  try {
+    const scene::EmbreeScene built(sceneOf({{cylinderProfile(1, 0, 1), tiny, "tiny"}}), {});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::runtime_error& error) {
+    EXPECT_THAT(error.what(), HasSubstr("test scene: objects[0]: its transform would carry rays beyond Embree's range"));
+  }
+}
+
+TEST(RayLimitsTest, ARayBeyondEmbreesRangeMissesAndIsCountedInsteadOfAborting) {
+  const scene::EmbreeScene built(sceneOf({{cylinderProfile(1, 0, 1), at(0, 0), "pole"}}), {});
+  const Ray far{{1e19f, 0, 0.5f}, {-1, 0, 0}};
+  EXPECT_FALSE(built.intersect(far).has_value());
+  EXPECT_FALSE(built.nearest(far).has_value());
+  EXPECT_FALSE(built.occluded(far));
+  EXPECT_EQ(built.refusedRays(), 3u);
+  // The same ray from within the range hits the pole's side, 2 - 1 away.
+  const std::optional<scene::RangeHit> near = built.nearest(Ray{{2, 0, 0.5f}, {-1, 0, 0}});
+  ASSERT_TRUE(near.has_value());
+  EXPECT_NEAR(near->t, 1, 1e-6);
+  EXPECT_EQ(built.refusedRays(), 3u);
+}
+
+// A closed ball of radius 1, scaled by (2, 3, 0.5), turned and moved: the camera is inside exactly
+// when its position, mapped back, lies within the unit ball (the inscribed polyline's 64 segments
+// are within 0.0003 of it, far from the points tested).
+TEST(DegenerateObjectsTest, TheCameraInsideAClosedObjectIsFoundThroughItsTransform) {
+  io::SceneTransform placed = at(4, -1, 2);
+  placed.scale = {2, 3, 0.5};
+  placed.rotateAxis = {0, 0, 1};
+  placed.rotateDegrees = 90;  // x -> y: the ball spans 3 along x and 2 along y
+  io::SceneDescription scene = sceneOf({{sphereProfile(1, 64), placed, "ball"}, {{{0, 0}, {1, 0}, {1, 1}}, at(4, -1, 2), "open cup"}});
+  const auto warningsWithCameraAt = [&](io::Vec3d from) {
+    scene.camera.from = from;
+    return scene::degenerateObjectWarnings(scene, true);
+  };
+  EXPECT_THAT(warningsWithCameraAt({4 + 2.9, -1, 2}),
+              ::testing::ElementsAre("test scene: objects[0] \"ball\": the camera (camera.from) lies inside it: the view shows its inside, or nothing"));
+  EXPECT_TRUE(warningsWithCameraAt({4 + 3.1, -1, 2}).empty());
+  EXPECT_EQ(warningsWithCameraAt({4, -1 + 1.9, 2}).size(), 1u);
+  EXPECT_TRUE(warningsWithCameraAt({4, -1 + 2.1, 2}).empty());
+  EXPECT_EQ(warningsWithCameraAt({4, -1, 2 + 0.45}).size(), 1u);
+  EXPECT_TRUE(warningsWithCameraAt({4, -1, 2 + 0.55}).empty());
+  // The open cup (its ends neither meet nor lie both on the axis) has no inside; tools without a
+  // camera do not ask.
+  EXPECT_TRUE(warningsWithCameraAt({4.5, -1, 2.5}).empty());
+  scene.camera.from = {4, -1, 2};
+  EXPECT_TRUE(scene::degenerateObjectWarnings(scene, false).empty());
+}
+
+// A profile on the axis has no area; a pole 3.05e-5 tall at 1e6 is below float's step there
+// (0.0625 = 2^-23 of 2^19..2^20, and 0.119 by the warning's 2^-23 x 1e6), the same pole at 1 is not.
+TEST(DegenerateObjectsTest, AnAxisOnlyProfileAndAnObjectBelowFloatResolutionAreNamed) {
+  io::SceneTransform speck = at(1e6, 0, 0);
+  speck.scale = {0x1p-16, 0x1p-16, 0x1p-16};
+  io::SceneTransform visible = at(1, 0, 0);
+  visible.scale = {0x1p-16, 0x1p-16, 0x1p-16};
+  const io::SceneDescription scene = sceneOf({{{{0, 0}, {0, 1}}, at(0, 0), "thread"},
+                                              {cylinderProfile(0.25, 0, 2), speck, "speck"},
+                                              {cylinderProfile(0.25, 0, 2), visible, "visible"}});
+  const std::vector<std::string> warnings = scene::degenerateObjectWarnings(scene, false);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_THAT(warnings[0], HasSubstr("objects[0] \"thread\": every point of profile \"p0\" lies on the axis (r = 0)"));
+  EXPECT_THAT(warnings[1], HasSubstr("objects[1] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06"));
+}
+
+}  // namespace
+}  // namespace revolve
