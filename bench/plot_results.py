@@ -133,7 +133,7 @@ def scaling_panel(ax, shape, methods=None):
         ax.plot(*zip(*sorted(points)), color=style["color"], marker=style["marker"], ms=4, label=label)
     ax.set_xscale("log", base=2)
     ax.set_yscale("log")
-    ax.set_xlabel("profile points (round curve: Bézier segments)")
+    ax.set_xlabel("profile points (round curve: segments)")
     ax.set_ylabel("Mrays/s (1 thread, rtcIntersect1)")
     ax.grid(True, which="both", lw=0.3)
 
