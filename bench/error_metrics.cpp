@@ -29,10 +29,10 @@ std::vector<ReferenceHit> referenceHits(const ReferenceTracer& tracer, const std
 }
 
 ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const std::vector<ReferenceHit>& reference,
-                           const ReferenceTracer& tracer, double size) {
+                           const ReferenceTracer& tracer, double size, bool orientedNormals) {
   struct PerRay {
     bool hit;
-    double residual, normalDegrees;
+    double residual, normalDegrees, sheetOffset;
   };
   std::vector<PerRay> results(rays.size());
   tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
@@ -49,6 +49,11 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
                          ray.origin.z + t * ray.direction.z};
     const ClosestPoint closest = tracer.closestTo(p);
     result.residual = closest.distance / size;
+    if (reference[i].hit) {
+      const ReferenceHit& first = reference[i];
+      result.sheetOffset = std::abs((p[0] - first.point[0]) * first.normal[0] + (p[1] - first.point[1]) * first.normal[1] +
+                                    (p[2] - first.point[2]) * first.normal[2]) / size;
+    }
     const double rho = std::hypot(p[0], p[1]);
     const double c = rho > 0.0 ? p[0] / rho : 1.0, s = rho > 0.0 ? p[1] / rho : 0.0;
     const double truth[3] = {closest.normal.r * c, closest.normal.r * s, closest.normal.z};
@@ -58,7 +63,8 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
     const double cross[3] = {n[1] * truth[2] - n[2] * truth[1], n[2] * truth[0] - n[0] * truth[2],
                              n[0] * truth[1] - n[1] * truth[0]};
     const double sine = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-    const double cosine = n[0] * truth[0] + n[1] * truth[1] + n[2] * truth[2];
+    const double dot = n[0] * truth[0] + n[1] * truth[1] + n[2] * truth[2];
+    const double cosine = orientedNormals ? dot : std::abs(dot);
     result.normalDegrees = std::atan2(sine, cosine) * 180.0 / std::numbers::pi;
   });
 
@@ -71,6 +77,10 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
     if (!reference[i].grazing) {
       ++summary.decided;
       if (result.hit != reference[i].hit) ++summary.disagreements;
+      if (result.hit && reference[i].hit) {
+        ++summary.bothHit;
+        if (result.sheetOffset > ErrorSummary::kOtherSheet) ++summary.otherSheet;
+      }
     }
     if (!result.hit) continue;
     ++summary.hits;

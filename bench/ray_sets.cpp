@@ -12,6 +12,12 @@ struct Sphere {
   double centre[3], radius;
 };
 
+// d / |d| rounded to float.
+Vec3 unitDirection(const double d[3]) {
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  return {float(d[0] / length), float(d[1] / length), float(d[2] / length)};
+}
+
 Sphere boundingSphere(const Box& box) {
   Sphere sphere{};
   double diagonal2 = 0.0;
@@ -42,7 +48,8 @@ std::vector<Ray> incoherentRays(const Box& box, std::size_t count, std::uint64_t
       target[k] = float(box.lower[k] + unit(random) * (box.upper[k] - box.lower[k]));
     }
     ray.origin = {origin[0], origin[1], origin[2]};
-    ray.direction = {target[0] - origin[0], target[1] - origin[1], target[2] - origin[2]};
+    const double direction[3] = {double(target[0]) - origin[0], double(target[1]) - origin[1], double(target[2]) - origin[2]};
+    ray.direction = unitDirection(direction);
     rays.push_back(ray);
   }
   return rays;
@@ -78,9 +85,9 @@ std::vector<Ray> cameraRays(const Box& box, int width, int height) {
           const double sy = (1.0 - 2.0 * (y + 0.5) / height) * halfHeight;
           Ray ray;
           ray.origin = {float(eye[0]), float(eye[1]), float(eye[2])};
-          float d[3];
-          for (int i = 0; i < 3; ++i) d[i] = float(-back[i] + sx * right[i] + sy * up[i]);
-          ray.direction = {d[0], d[1], d[2]};
+          double d[3];
+          for (int i = 0; i < 3; ++i) d[i] = -back[i] + sx * right[i] + sy * up[i];
+          ray.direction = unitDirection(d);
           rays.push_back(ray);
         }
       }

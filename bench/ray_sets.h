@@ -1,4 +1,7 @@
-// The rays every method traces: the same seeded incoherent rays and the same camera rays.
+// The rays every method traces: the same seeded incoherent rays and the same camera rays. Their
+// directions are unit vectors (rounded to float): Embree 3.13's linear cone curve kernel assumes
+// them (kernels/geometry/coneline_intersector.h: its quadratic's leading coefficient leaves out
+// |d|^2), and every other method takes any length.
 #pragma once
 
 #include <revolve/revolve.h>

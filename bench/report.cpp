@@ -58,7 +58,10 @@ json errorJson(const std::optional<ErrorSummary>& e) {
           {"normal_p99_degrees", e->normalP99Degrees},
           {"disagreements", e->disagreements},
           {"decided", e->decided},
-          {"disagreement_fraction", e->disagreementFraction()}};
+          {"disagreement_fraction", e->disagreementFraction()},
+          {"other_sheet", e->otherSheet},
+          {"both_hit", e->bothHit},
+          {"other_sheet_fraction", e->otherSheetFraction()}};
 }
 
 json configJson(const ConfigResult& c) {
@@ -66,6 +69,7 @@ json configJson(const ConfigResult& c) {
   for (const auto& [mode, t] : c.speed) speed[mode] = {{"median", t.median}, {"low", t.low}, {"high", t.high}};
   return {{"method", c.config.method()},
           {"label", c.config.label()},
+          {"limitation", c.limitation.empty() ? json(nullptr) : json(c.limitation)},
           {"points", c.config.points},
           {"slices", c.config.slices},
           {"triangles", c.triangles},
@@ -92,7 +96,8 @@ json shapeJson(const ShapeResult& shape) {
               {"total_bytes", c.totalBytes()}};
     };
     json entry = {{"mode", row.mode}, {"level", row.level}, {"mibit", pick(row.mibit)}, {"mesh", pick(row.mesh)},
-                  {"leanest_mibit", pick(row.leanestMibit)}, {"leanest_mesh", pick(row.leanestMesh)}};
+                  {"leanest_mibit", pick(row.leanestMibit)}, {"leanest_mesh", pick(row.leanestMesh)},
+                  {"embree_cone", pick(row.embreeCone)}, {"embree_round_curve", pick(row.embreeRoundCurve)}};
     if (row.mibit && row.mesh) {
       entry["speed_ratio"] = shape.configs[*row.mibit].speed.at(row.mode).median / shape.configs[*row.mesh].speed.at(row.mode).median;
     }
@@ -112,11 +117,17 @@ json shapeJson(const ShapeResult& shape) {
 }
 
 void printShape(std::FILE* out, const ShapeResult& shape) {
-  std::fprintf(out, "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays)\n", shape.name.c_str(),
-               shape.size, shape.incoherentRays, shape.cameraRays);
-  std::fprintf(out, "%-22s %10s %10s %9s %9s %9s | %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max", "err p99",
-               "normal p99", "miss/hit", "disagree", "inc 1", "cam 1", "cam 8", "inc all", "revolve", "embree", "build ms");
+  std::fprintf(out,
+               "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays; errors, hits, hit/miss "
+               "disagreements and hits on another sheet than the first (\"other\") of the incoherent rays)\n",
+               shape.name.c_str(), shape.size, shape.incoherentRays, shape.cameraRays);
+  std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s | %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max", "err p99",
+               "normal p99", "hits", "disagree", "other", "inc 1", "cam 1", "cam 8", "inc all", "revolve", "embree", "build ms");
   for (const ConfigResult& c : shape.configs) {
+    if (!c.limitation.empty()) {
+      std::fprintf(out, "%-25s cannot: %s\n", c.config.label().c_str(), c.limitation.c_str());
+      continue;
+    }
     const auto speed = [&](const char* mode) {
       const auto it = c.speed.find(mode);
       char text[16] = "-";
@@ -124,11 +135,11 @@ void printShape(std::FILE* out, const ShapeResult& shape) {
       return std::string(text);
     };
     if (c.incoherent) {
-      std::fprintf(out, "%-22s %10.2e %10.2e %8.3f° %9zu %8.4f%% |", c.config.label().c_str(), c.incoherent->residualMax,
+      std::fprintf(out, "%-25s %10.2e %10.2e %8.3f° %9zu %8.4f%% %8zu |", c.config.label().c_str(), c.incoherent->residualMax,
                    c.incoherent->residualP99, c.incoherent->normalP99Degrees, c.incoherent->hits,
-                   100.0 * c.incoherent->disagreementFraction());
+                   100.0 * c.incoherent->disagreementFraction(), c.incoherent->otherSheet);
     } else {
-      std::fprintf(out, "%-22s %10s %10s %9s %9s %9s |", c.config.label().c_str(), "-", "-", "-", "-", "-");
+      std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s |", c.config.label().c_str(), "-", "-", "-", "-", "-", "-");
     }
     std::fprintf(out, " %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(), speed(kCamera1).c_str(),
                  speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(), bytesText(double(c.revolveBytes)).c_str(),
@@ -136,12 +147,23 @@ void printShape(std::FILE* out, const ShapeResult& shape) {
   }
 }
 
+// "cannot" when the method traces none of the shape's configurations, else "none".
+std::string noPick(const ShapeResult& shape, MethodKind kind) {
+  for (const ConfigResult& c : shape.configs) {
+    if (c.config.kind == kind && c.limitation.empty()) return "none";
+  }
+  return "cannot";
+}
+
 void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
   for (const char* mode : {kIncoherent1, kCamera8, kCamera1, kIncoherentAll}) {
-    std::fprintf(out, "\nMatched error: fastest MIBIT against fastest mesh with max error <= level (%s; Mrays/s)\n",
+    std::fprintf(out,
+                 "\nMatched error: fastest MIBIT against fastest mesh, and Embree's fastest cone and round curves, with "
+                 "max error <= level (%s; Mrays/s)\n",
                  modeTitle(mode));
-    std::fprintf(out, "%-8s %7s | %-14s %8s | %-16s %8s | %7s | %10s\n", "shape", "level", "MIBIT", "Mrays/s", "mesh",
-                 "Mrays/s", "ratio", "mem ratio");
+    std::fprintf(out, "%-8s %7s | %-14s %8s | %-16s %8s | %7s | %10s | %-16s %8s | %-23s %8s\n", "shape", "level", "MIBIT",
+                 "Mrays/s", "mesh", "Mrays/s", "ratio", "mem ratio", "embree cone", "Mrays/s", "embree round curve",
+                 "Mrays/s");
     for (const ShapeResult& shape : shapes) {
       for (const MatchedRow& row : shape.matched) {
         if (row.mode != mode) continue;
@@ -153,8 +175,14 @@ void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
           std::snprintf(memory, sizeof memory, "%.0fx",
                         shape.configs[*row.leanestMesh].totalBytes() / shape.configs[*row.leanestMibit].totalBytes());
         }
-        std::fprintf(out, "%-8s %7.0e | %-14s %8.3g | %-16s %8.3g | %7s | %10s\n", shape.name.c_str(), row.level,
-                     label(row.mibit).c_str(), speed(row.mibit), label(row.mesh).c_str(), speed(row.mesh), ratio, memory);
+        const auto curve = [&](const std::optional<std::size_t>& i, MethodKind kind) {
+          return i ? shape.configs[*i].config.label() : noPick(shape, kind);
+        };
+        std::fprintf(out, "%-8s %7.0e | %-14s %8.3g | %-16s %8.3g | %7s | %10s | %-16s %8.3g | %-23s %8.3g\n",
+                     shape.name.c_str(), row.level, label(row.mibit).c_str(), speed(row.mibit), label(row.mesh).c_str(),
+                     speed(row.mesh), ratio, memory, curve(row.embreeCone, MethodKind::embreeCone).c_str(),
+                     speed(row.embreeCone), curve(row.embreeRoundCurve, MethodKind::embreeRoundCurve).c_str(),
+                     speed(row.embreeRoundCurve));
       }
     }
   }
@@ -163,11 +191,23 @@ void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
 void printScaling(std::FILE* out, const ShapeResult& shape) {
   std::fprintf(out, "\n== scaling: %s, %zu incoherent rays, rtcIntersect1, 1 thread (Mrays/s; max error)\n", shape.name.c_str(),
                shape.incoherentRays);
-  std::fprintf(out, "%-20s %10s %10s %12s\n", "method", "Mrays/s", "err max", "memory");
+  std::fprintf(out, "%-26s %10s %10s %12s\n", "method", "Mrays/s", "err max", "memory");
   for (const ConfigResult& c : shape.configs) {
-    std::fprintf(out, "%-20s %10.4g %10.2e %12s\n", c.config.label().c_str(), c.speed.at(kIncoherent1).median,
+    if (!c.limitation.empty()) {
+      std::fprintf(out, "%-26s cannot: %s\n", c.config.label().c_str(), c.limitation.c_str());
+      continue;
+    }
+    std::fprintf(out, "%-26s %10.4g %10.2e %12s\n", c.config.label().c_str(), c.speed.at(kIncoherent1).median,
                  c.incoherent ? c.incoherent->residualMax : NAN, bytesText(c.totalBytes()).c_str());
   }
+}
+
+// A CSV field: quoted when it holds a comma, a quote or a line break, quotes doubled (RFC 4180).
+std::string csvText(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
 }
 
 std::string csvNumber(double value) {
@@ -211,21 +251,28 @@ void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults
 void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults& results) {
   std::ostringstream csv;
   csv << "suite,shape,method,points,slices,mode,mrays_median,mrays_low,mrays_high,residual_max,residual_p99,"
-         "residual_rms,normal_p99_degrees,disagreement_fraction,revolve_bytes,embree_bytes,build_seconds\n";
+         "residual_rms,normal_p99_degrees,disagreement_fraction,other_sheet_fraction,revolve_bytes,embree_bytes,build_seconds,"
+         "limitation\n";
   const auto rows = [&](const char* suite, const std::vector<ShapeResult>& shapes) {
     for (const ShapeResult& shape : shapes) {
       for (const ConfigResult& c : shape.configs) {
+        if (!c.limitation.empty()) {  // one row, with the reason and no figures
+          csv << suite << ',' << shape.name << ',' << c.config.method() << ',' << c.config.points << ','
+              << c.config.slices << std::string(14, ',') << csvText(c.limitation) << '\n';
+          continue;
+        }
         for (const auto& [mode, t] : c.speed) {
           const std::optional<ErrorSummary>& e = mode.rfind("camera", 0) == 0 ? c.camera : c.incoherent;
           csv << suite << ',' << shape.name << ',' << c.config.method() << ',' << c.config.points << ',' << c.config.slices
               << ',' << mode << ',' << csvNumber(t.median) << ',' << csvNumber(t.low) << ',' << csvNumber(t.high) << ',';
           if (e) {
             csv << csvNumber(e->residualMax) << ',' << csvNumber(e->residualP99) << ',' << csvNumber(e->residualRms) << ','
-                << csvNumber(e->normalP99Degrees) << ',' << csvNumber(e->disagreementFraction());
+                << csvNumber(e->normalP99Degrees) << ',' << csvNumber(e->disagreementFraction()) << ','
+                << csvNumber(e->otherSheetFraction());
           } else {
-            csv << ",,,,";
+            csv << ",,,,,";
           }
-          csv << ',' << c.revolveBytes << ',' << c.embreeBytes << ',' << csvNumber(c.buildSeconds) << '\n';
+          csv << ',' << c.revolveBytes << ',' << c.embreeBytes << ',' << csvNumber(c.buildSeconds) << ",\n";
         }
       }
     }

@@ -20,6 +20,7 @@ inline constexpr const char* kIncoherentAll = "incoherent_all";  // rtcIntersect
 
 struct ConfigResult {
   MethodConfig config;
+  std::string limitation;  // why the method cannot trace this shape (then nothing else is measured)
   double buildSeconds = 0;
   std::size_t revolveBytes = 0;
   std::int64_t embreeBytes = 0;
@@ -30,12 +31,14 @@ struct ConfigResult {
 };
 
 // The fastest MIBIT (cylinder shells) and the fastest mesh whose largest error is within `level`,
-// for one shape and timing mode, and the smallest memory of each within it.
+// for one shape and timing mode, and the smallest memory of each within it; and the fastest of
+// Embree's cone curves and round curves within it.
 struct MatchedRow {
   std::string shape, mode;
   double level;
   std::optional<std::size_t> mibit, mesh;  // indices into the shape's configs
   std::optional<std::size_t> leanestMibit, leanestMesh;
+  std::optional<std::size_t> embreeCone, embreeRoundCurve;
 };
 
 struct ShapeResult {

@@ -4,11 +4,12 @@
 //
 // speed-error traces five smooth test shapes with MIBIT (each shell kind) at increasing profile
 // resolution, with Embree triangle meshes over a grid of profile points x slices, with the linear
-// scan and Kajiya's strip tree, and with one analytic user primitive (the floor of any user
-// geometry's cost); it measures every method's error against the smooth surface and its speed
-// (Mrays/s, medians of interleaved repetitions), build time and memory, and matches MIBIT against
-// the best mesh at each error level. scaling measures throughput against the number of profile
-// points, 16 to 32,768. With no subcommand both run.
+// scan and Kajiya's strip tree, with Embree's own linear cone curves and round Bézier curves along
+// the axis (or the reason they cannot trace a shape), and with one analytic user primitive (the
+// floor of any user geometry's cost); it measures every method's error against the smooth surface
+// and its speed (Mrays/s, medians of interleaved repetitions), build time and memory, and matches
+// MIBIT against the best mesh and Embree's curves at each error level. scaling measures throughput
+// against the number of profile points, 16 to 32,768. With no subcommand both run.
 #include "report.h"
 #include "suites.h"
 

@@ -17,6 +17,7 @@ namespace {
 struct Ladders {
   std::vector<int> mibitPoints, baselinePoints, meshPoints, meshSlices;
   std::uint64_t maxTriangles;
+  std::vector<int> roundSegments;  // Embree's round curve: Bézier segments
 };
 
 std::vector<int> powersOfTwo(int from, int to) {
@@ -26,10 +27,12 @@ std::vector<int> powersOfTwo(int from, int to) {
 }
 
 Ladders laddersFor(const RunSettings& settings) {
-  if (settings.quick) return {{16, 64, 256}, {16, 64}, {16, 64, 256}, {16, 64, 256}, 1u << 20};
+  if (settings.quick) return {{16, 64, 256}, {16, 64}, {16, 64, 256}, {16, 64, 256}, 1u << 20, {4, 16, 64}};
   // Meshes up to 2^23 triangles (a 2048 x 2048 grid): past that, building the grid's largest meshes
-  // takes longer than the whole rest of the run.
-  return {powersOfTwo(16, 4096), powersOfTwo(16, 1024), powersOfTwo(16, 4096), powersOfTwo(8, 4096), 1u << 23};
+  // takes longer than the whole rest of the run. Round curves reach their single-precision floor by
+  // 16 segments (cubic arcs: error ~ theta^6); up to 1,024 shows what more of them costs.
+  return {powersOfTwo(16, 4096), powersOfTwo(16, 1024), powersOfTwo(16, 4096), powersOfTwo(8, 4096), 1u << 23,
+          powersOfTwo(4, 1024)};
 }
 
 double facetError(double rMax, int slices) { return rMax * (1.0 - std::cos(std::numbers::pi / slices)); }
@@ -82,7 +85,15 @@ class ShapeBench {
   }
 
   // Builds the method, measures its errors now and queues its timing in `modes`.
+  // A configuration the method cannot trace is recorded with the reason, and neither built nor timed.
   void add(const MethodConfig& config, const std::vector<const char*>& modes, Timer& timer) {
+    if (std::optional<std::string> limitation = limitationOf(profile_, config)) {
+      ConfigResult refused;
+      refused.config = config;
+      refused.limitation = std::move(*limitation);
+      result_.configs.push_back(std::move(refused));
+      return;
+    }
     scenes_.push_back(std::make_unique<TracedScene>(device_, monitor_, profile_, config, sphere_));
     const TracedScene& scene = *scenes_.back();
     ConfigResult result;
@@ -93,9 +104,11 @@ class ShapeBench {
     result.triangles = scene.triangles();
     const bool meaningful = config.kind != MethodKind::sphere || profile_.name() == "sphere";
     if (meaningful) {
-      result.incoherent = measureErrors(scene.scene(), rays_.incoherent, rays_.incoherentReference, tracer_, result_.size);
+      const bool oriented = config.orientedNormals();
+      result.incoherent =
+          measureErrors(scene.scene(), rays_.incoherent, rays_.incoherentReference, tracer_, result_.size, oriented);
       if (!rays_.camera.empty()) {
-        result.camera = measureErrors(scene.scene(), rays_.camera, rays_.cameraReference, tracer_, result_.size);
+        result.camera = measureErrors(scene.scene(), rays_.camera, rays_.cameraReference, tracer_, result_.size, oriented);
       }
     }
     const std::size_t index = result_.configs.size();
@@ -157,6 +170,9 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
       bench.add({MethodKind::linear, ShellKind::cylinder, n}, incoherentOnly, timer);
       bench.add({MethodKind::kajiya, ShellKind::cylinder, n}, incoherentOnly, timer);
     }
+    // Embree's own curves: the cone curve on MIBIT's very polylines, the round curve fitted anew.
+    for (int n : ladders.mibitPoints) bench.add({MethodKind::embreeCone, ShellKind::cylinder, n}, allModes, timer);
+    for (int n : ladders.roundSegments) bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, allModes, timer);
     // Meshes whose two errors (the profile's chords, the slices' facets) are within a factor of 16
     // of each other: a mesh far off that balance is beaten by one with fewer triangles.
     for (int n : ladders.meshPoints) {
@@ -178,6 +194,10 @@ std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& setting
   const MemoryMonitor monitor(device);
   const SmoothProfile profile = vaseShape();
   const std::vector<int> points = settings.quick ? std::vector<int>{16, 256, 4096} : powersOfTwo(16, 32768);
+  // Each ray meets every round-curve segment in its height range (their boxes span the body's
+  // width) at some microseconds each: past 4,096 segments (256 in a quick run) its error
+  // measurement alone would outlast the rest of the run.
+  const int roundCurveMax = settings.quick ? 256 : 4096;
   const std::vector<const char*> modes = {kIncoherent1};
   std::fprintf(stderr, "scaling: %s: reference hits\n", profile.name().c_str());
   Timer timer(settings.repetitions, settings.minSeconds);
@@ -188,6 +208,8 @@ std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& setting
     bench.add({MethodKind::mibit, ShellKind::cylinder, n, 0, true}, modes, timer);
     bench.add({MethodKind::linear, ShellKind::cylinder, n}, modes, timer);
     bench.add({MethodKind::kajiya, ShellKind::cylinder, n}, modes, timer);
+    bench.add({MethodKind::embreeCone, ShellKind::cylinder, n}, modes, timer);
+    if (n <= roundCurveMax) bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, modes, timer);
     // The mesh of the same profile with just enough slices that its facets are no coarser than its
     // chords (at most 4096 slices and 2^24 triangles).
     int k = 8;
@@ -203,7 +225,7 @@ void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {
   for (const char* mode : {kIncoherent1, kCamera1, kCamera8, kIncoherentAll}) {
     const bool camera = std::string(mode).rfind("camera", 0) == 0;
     for (double level : levels) {
-      MatchedRow row{shape.name, mode, level, {}, {}, {}, {}};
+      MatchedRow row{shape.name, mode, level, {}, {}, {}, {}, {}, {}};
       for (std::size_t i = 0; i < shape.configs.size(); ++i) {
         const ConfigResult& c = shape.configs[i];
         const std::optional<ErrorSummary>& error = camera ? c.camera : c.incoherent;
@@ -211,6 +233,11 @@ void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {
         if (!error || speed == c.speed.end() || error->hits == 0 || !(error->residualMax <= level)) continue;
         const bool mibit = c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary;
         const bool mesh = c.config.kind == MethodKind::mesh;
+        const auto keepFastest = [&](std::optional<std::size_t>& fastest) {
+          if (!fastest || speed->second.median > shape.configs[*fastest].speed.at(mode).median) fastest = i;
+        };
+        if (c.config.kind == MethodKind::embreeCone) keepFastest(row.embreeCone);
+        if (c.config.kind == MethodKind::embreeRoundCurve) keepFastest(row.embreeRoundCurve);
         if (!mibit && !mesh) continue;
         std::optional<std::size_t>& fastest = mibit ? row.mibit : row.mesh;
         std::optional<std::size_t>& leanest = mibit ? row.leanestMibit : row.leanestMesh;

@@ -1,7 +1,10 @@
 #include "traced_scene.h"
 
+#include "round_curve.h"
+
 #include <chrono>
 #include <stdexcept>
+#include <variant>
 
 namespace revolve::bench {
 
@@ -14,6 +17,8 @@ std::string MethodConfig::method() const {
     case MethodKind::kajiya: return "kajiya";
     case MethodKind::mesh: return "mesh";
     case MethodKind::sphere: return "sphere";
+    case MethodKind::embreeCone: return "embree_cone";
+    case MethodKind::embreeRoundCurve: return "embree_round_curve";
   }
   return "?";
 }
@@ -21,7 +26,17 @@ std::string MethodConfig::method() const {
 std::string MethodConfig::label() const {
   if (kind == MethodKind::sphere) return "analytic sphere";
   if (kind == MethodKind::mesh) return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
+  if (kind == MethodKind::embreeRoundCurve) return method() + " " + std::to_string(points) + " seg";
   return method() + " " + std::to_string(points);
+}
+
+std::optional<std::string> limitationOf(const SmoothProfile& profile, const MethodConfig& config) {
+  if (config.kind == MethodKind::embreeCone) return coneCurveLimitation(Profile(profile.sample(config.points)));
+  if (config.kind == MethodKind::embreeRoundCurve) {
+    auto fit = fitRoundCurve(profile, config.points);
+    if (auto* reason = std::get_if<std::string>(&fit)) return *reason;
+  }
+  return std::nullopt;
 }
 
 MemoryMonitor::MemoryMonitor(RTCDevice device) { rtcSetDeviceMemoryMonitorFunction(device, record, this); }
@@ -41,6 +56,15 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
   RTCGeometry geometry = nullptr;
   switch (config.kind) {
     case MethodKind::sphere: geometry = newAnalyticSphereGeometry(device, sphere_); break;
+    case MethodKind::embreeCone:
+      coneCurve_ = std::make_unique<ConeCurveGeometry>(device, Profile(profile.sample(config.points)));
+      break;
+    case MethodKind::embreeRoundCurve: {
+      auto fit = fitRoundCurve(profile, config.points);
+      if (auto* reason = std::get_if<std::string>(&fit)) throw std::invalid_argument(*reason);
+      attachRoundCurve(device, scene_, std::get<RoundCurveFit>(fit));
+      break;
+    }
     case MethodKind::mesh: {
       const Profile polyline(profile.sample(config.points));
       geometry = newTessellatedGeometry(device, polyline, std::uint32_t(config.slices));
@@ -63,8 +87,10 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
   if (geometry != nullptr) {
     rtcAttachGeometry(scene_, geometry);
     rtcReleaseGeometry(geometry);  // the scene holds it
-  } else {
+  } else if (geometry_ != nullptr) {
     rtcAttachGeometry(scene_, geometry_->handle());
+  } else if (coneCurve_ != nullptr) {
+    rtcAttachGeometry(scene_, coneCurve_->handle());
   }
   rtcCommitScene(scene_);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

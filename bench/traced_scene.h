@@ -9,21 +9,28 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace revolve::bench {
 
-enum class MethodKind { mibit, linear, kajiya, mesh, sphere };
+// embreeCone: the polyline as Embree's linear cone curve; embreeRoundCurve: Embree's round Bézier
+// curve fitted to the smooth profile (round_curve.h).
+enum class MethodKind { mibit, linear, kajiya, mesh, sphere, embreeCone, embreeRoundCurve };
 
 struct MethodConfig {
   MethodKind kind = MethodKind::mibit;
   ShellKind shell = ShellKind::cylinder;  // MIBIT only
-  int points = 0;                         // profile points (not for the analytic sphere)
+  int points = 0;                         // profile points (not for the analytic sphere); Bézier segments of a round curve
   int slices = 0;                         // meshes only
   bool binary = false;                    // MIBIT with the paper's binary tree (BuildOptions::wideNodes off)
-  // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere"
+  // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere",
+  // "embree_cone", "embree_round_curve"
   std::string method() const;
-  std::string label() const;              // method and resolution, e.g. "mesh 64x128"
+  std::string label() const;              // method and resolution, e.g. "mesh 64x128", "embree_round_curve 8 seg"
+  // Embree's curves orient Ng away from their centre line whatever side the solid is on: their
+  // normals are compared with the surface's up to sign.
+  bool orientedNormals() const { return kind != MethodKind::embreeCone && kind != MethodKind::embreeRoundCurve; }
 };
 
 // Embree's own allocations on a device (rtcSetDeviceMemoryMonitorFunction), net of frees.
@@ -37,9 +44,14 @@ class MemoryMonitor {
   std::atomic<std::int64_t> bytes_{0};
 };
 
+// Why `config` cannot trace `profile` (Embree's curves cannot express every profile), or nothing.
+std::optional<std::string> limitationOf(const SmoothProfile& profile, const MethodConfig& config);
+
 class TracedScene {
  public:
-  // The analytic sphere is built from `sphere`; every other method from profile.sample(points).
+  // The analytic sphere is built from `sphere`, the round curve from the smooth profile itself,
+  // every other method from profile.sample(points). Throws std::invalid_argument for a
+  // configuration limitationOf refuses.
   TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const MethodConfig& config,
               const AnalyticSphere& sphere);
   ~TracedScene();
@@ -57,6 +69,7 @@ class TracedScene {
   MethodConfig config_;
   std::unique_ptr<Shape> shape_;
   std::unique_ptr<Geometry> geometry_;
+  std::unique_ptr<ConeCurveGeometry> coneCurve_;
   AnalyticSphere sphere_;
   RTCScene scene_ = nullptr;
   double buildSeconds_ = 0.0;

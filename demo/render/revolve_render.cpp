@@ -1,6 +1,6 @@
 // revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
-// ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
-// for comparison). Options and the scene format are documented in README.md.
+// ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated, or
+// as Embree's own linear cone curve, for comparison). Options and the scene format are documented in README.md.
 #include "common/command_line.h"
 #include "common/memory_check.h"
 #include "image_output.h"
@@ -38,6 +38,7 @@ struct Options {
 scene::BuildSettings buildSettings(const Options& options) {
   scene::BuildSettings build;
   build.mesh = options.geometry == "mesh";
+  build.embreeCone = options.geometry == "embree-cone";
   build.slices = options.slices;
   build.options.method = options.geometry == "linear" ? Method::linear : options.geometry == "kajiya" ? Method::kajiya : Method::mibit;
   build.options.shell = options.shell == "cone" ? ShellKind::cone : options.shell == "hybrid" ? ShellKind::hybrid : ShellKind::cylinder;
@@ -192,8 +193,10 @@ int main(int argc, char** argv) {
   app.add_option("--depth", options.depth, "path: most surface hits a path has (default 8); whitted: ray levels, 1 = ray casting (default 4)")
       ->check(app::wholeNumberIn(1, 64));
   app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
-  app.add_option("--geometry", options.geometry, "how surfaces of revolution are traced (mesh: tessellated with --slices)")
-      ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
+  app.add_option("--geometry", options.geometry,
+                 "how surfaces of revolution are traced (mesh: tessellated with --slices; embree-cone: Embree's own "
+                 "linear cone curve, for the profiles it can express)")
+      ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh", "embree-cone"}))
       ->capture_default_str();
   app.add_option("--shell", options.shell, "MIBIT bounding shells")->check(CLI::IsMember({"cylinder", "cone", "hybrid"}))->capture_default_str();
   app.add_flag("--no-monotone-split", options.noMonotoneSplit, "MIBIT: refine each profile as one interval");

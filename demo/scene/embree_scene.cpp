@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -90,6 +91,39 @@ Vec3 pushAlongNormal(Vec3 p, Vec3 n, float distance, Vec3 direction) {
   return {awayFrom(p.x + offset.x, offset.x), awayFrom(p.y + offset.y, offset.y), awayFrom(p.z + offset.z, offset.z)};
 }
 
+// The distance from `local` (object space) to the profile segment's surface, in double precision.
+double distanceToSegment(const Profile& profile, std::uint32_t segment, Vec3 local) {
+  const Point2 a = profile.points()[segment], b = profile.points()[segment + 1];
+  const double rho = std::hypot(double(local.x), double(local.y));
+  const double er = b.r - a.r, ez = b.z - a.z;
+  const double along = std::clamp(((rho - a.r) * er + (local.z - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
+  return std::hypot(rho - (a.r + along * er), local.z - (a.z + along * ez));
+}
+
+// revolve's u and v (Conventions) of an object-space point on (or next to) a profile segment.
+std::pair<float, float> surfaceParameters(const Profile& profile, std::uint32_t segment, Vec3 local) {
+  const double uTurns = std::atan2(double(local.y), double(local.x)) * (0.5 / std::numbers::pi);
+  const float u = float(uTurns < 0 ? uTurns + 1 : uTurns);
+  const Point2 a = profile.points()[segment], b = profile.points()[segment + 1];
+  const double rho = std::hypot(double(local.x), double(local.y));
+  const double er = b.r - a.r, ez = b.z - a.z;
+  const double along = std::clamp(((rho - a.r) * er + (local.z - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
+  const std::span<const double> arc = profile.arcLength();
+  return {u, float((arc[segment] + along * (arc[segment + 1] - arc[segment])) / arc.back())};
+}
+
+// The ray with a unit direction, t scaled to match (tfar = inf stays inf); returns |d|, by which
+// the t Embree returns is divided to come back to the caller's units.
+float normaliseDirection(RTCRay& ray) noexcept {
+  const float length = std::sqrt(ray.dir_x * ray.dir_x + ray.dir_y * ray.dir_y + ray.dir_z * ray.dir_z);
+  ray.dir_x /= length;
+  ray.dir_y /= length;
+  ray.dir_z /= length;
+  ray.tnear *= length;
+  ray.tfar *= length;
+  return length;
+}
+
 }  // namespace
 
 struct EmbreeScene::Prototype {
@@ -97,6 +131,7 @@ struct EmbreeScene::Prototype {
   ShadingNormals normals;
   std::optional<Shape> shape;
   std::optional<Geometry> geometry;
+  std::optional<ConeCurveGeometry> cone;
   RTCGeometry mesh = nullptr;  // retained while the prototype lives
   const float* meshVertices = nullptr;
   const std::uint32_t* meshIndices = nullptr;
@@ -112,6 +147,9 @@ struct EmbreeScene::Prototype {
       meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_INDEX, 0));
       if (meshVertices == nullptr || meshIndices == nullptr) throw std::runtime_error("Embree gave no mesh buffers");
       rtcAttachGeometry(scene.get(), mesh);
+    } else if (settings.embreeCone) {
+      cone.emplace(device, profile);
+      rtcAttachGeometry(scene.get(), cone->handle());
     } else {
       shape.emplace(profile, settings.options);
       geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
@@ -151,6 +189,27 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
         return true;
       },
       memory_.get());
+
+  if (settings.embreeCone) {
+    for (std::size_t i = 0; i < description.objects.size(); ++i) {
+      const io::SceneObject& object = description.objects[i];
+      const io::SceneProfile& profile = description.profiles[object.profile];
+      const std::string which = "object " + std::to_string(i) + (object.name.empty() ? "" : " \"" + object.name + "\"") +
+                                " (profile \"" + profile.name + "\")";
+      if (std::optional<std::string> limitation = coneCurveLimitation(profile.profile)) {
+        throw std::runtime_error(which + " cannot be traced as Embree's linear cone curve: " + *limitation);
+      }
+      const io::Vec3d& scale = object.transform.scale;
+      if (scale[0] != 1 || scale[1] != 1 || scale[2] != 1) {
+        char text[96];
+        std::snprintf(text, sizeof text, "%.9g, %.9g, %.9g", scale[0], scale[1], scale[2]);
+        throw std::runtime_error(which + " is scaled by (" + text +
+                                 "): Embree's linear cone curve kernel assumes unit ray directions, and an instance's "
+                                 "scale changes their length in object space; scale its profile's points instead");
+      }
+    }
+  }
+  unitDirections_ = settings.embreeCone;
 
   // Each profile used by an object is built once (in parallel: shapes are independent).
   std::vector<std::int64_t> prototypeOf(description.profiles.size(), -1);
@@ -253,8 +312,10 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit = app::embreeRayHit(ray);
+  const float length = unitDirections_ ? normaliseDirection(rayHit.ray) : 1.0f;
   rtcIntersect1(top_.get(), &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  rayHit.ray.tfar /= length;
   return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
 }
 
@@ -266,8 +327,10 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit = app::embreeRayHit(ray);
+  const float length = unitDirections_ ? normaliseDirection(rayHit.ray) : 1.0f;
   rtcIntersect1(top_.get(), &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  rayHit.ray.tfar /= length;
   const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
   return RangeHit{rayHit.ray.tfar, instance ? rayHit.hit.instID[0] : std::uint32_t(instances_.size() + rayHit.hit.primID / 2)};
 }
@@ -280,6 +343,7 @@ bool EmbreeScene::occluded(const Ray& ray) const noexcept {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay shadow = app::embreeRayHit(ray).ray;
+  if (unitDirections_) normaliseDirection(shadow);
   rtcOccluded1(top_.get(), &context, &shadow);
   return shadow.tfar == -std::numeric_limits<float>::infinity();
 }
@@ -293,7 +357,26 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
   hit.material = instance.material;
   hit.object = rayHit.hit.instID[0];
   Vec3 objectNormal, shadingNormal;
-  if (prototype.mesh == nullptr) {
+  if (prototype.cone) {
+    // Embree's cone curve: its Ng turned to revolve's side, the profile segment and u, v recovered
+    // from the point. Its single-precision hit comes with no error bound: the point's own distance
+    // from its cone (in double, object space) stands in for one, with the rounding of o + t d.
+    const ConeCurveGeometry& cone = *prototype.cone;
+    const Vec3 ng{rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
+    const std::uint32_t segment = cone.profileSegment(rayHit.hit.primID, rayHit.hit.u, ng);
+    hit.point = ray.origin + hit.t * ray.direction;
+    const Vec3 offset = hit.point - instance.translate;  // world to object: L^-1 (p - T), L^-1 = normalMatrix^T
+    const Matrix3& n = instance.normalMatrix;
+    const Vec3 local{float(n.m[0][0] * offset.x + n.m[1][0] * offset.y + n.m[2][0] * offset.z),
+                     float(n.m[0][1] * offset.x + n.m[1][1] * offset.y + n.m[2][1] * offset.z),
+                     float(n.m[0][2] * offset.x + n.m[1][2] * offset.y + n.m[2][2] * offset.z)};
+    objectNormal = cone.normalSign(rayHit.hit.primID) * ng;
+    const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
+    shadingNormal = prototype.normals.normal(segment, u, v);
+    const float residual = float(instance.linear.infinityNorm() * distanceToSegment(prototype.profile, segment, local));
+    const float rounding = float(gamma(3)) * app::maxComponent(app::absolute(ray.origin) + app::absolute(hit.t * ray.direction));
+    hit.pointError = {residual + rounding, residual + rounding, residual + rounding};
+  } else if (prototype.mesh == nullptr) {
     // Exact surface: Ng, u, v and primID in revolve's conventions (object space).
     hit.exactSurface = true;
     hit.point = ray.origin + hit.t * ray.direction;
@@ -315,14 +398,7 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     const Vec3 localError = float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
     objectNormal = app::cross(p1 - p0, p2 - p0);  // outwards for a profile listed bottom to top, as Ng
     const std::uint32_t segment = rayHit.hit.primID / (2 * prototype.slices);
-    const double uTurns = std::atan2(double(local.y), double(local.x)) * (0.5 / std::numbers::pi);
-    const float u = float(uTurns < 0 ? uTurns + 1 : uTurns);
-    const Point2 a = prototype.profile.points()[segment], b = prototype.profile.points()[segment + 1];
-    const double rho = std::hypot(double(local.x), double(local.y));
-    const double er = b.r - a.r, ez = b.z - a.z;
-    const double along = std::clamp(((rho - a.r) * er + (local.z - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
-    const std::span<const double> arc = prototype.profile.arcLength();
-    const float v = float((arc[segment] + along * (arc[segment + 1] - arc[segment])) / arc.back());
+    const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
     shadingNormal = prototype.normals.normal(segment, u, v);
     // World point L p + T: its own rounding (gamma(3) (|L| |p| + |T|)) plus the object error through |L|.
     hit.point = instance.linear.apply(local) + instance.translate;

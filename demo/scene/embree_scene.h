@@ -1,5 +1,5 @@
 // A scene description (io/scene_file.h) built into Embree: each distinct profile once, as a
-// revolve Shape + Geometry (or a tessellated mesh) in a scene of its own, instanced into a flat
+// revolve Shape + Geometry (or a tessellated mesh, or Embree's own linear cone curve) in a scene of its own, instanced into a flat
 // top-level scene under each object's transform; quads as top-level triangles. Hits come back in
 // world space with their object's index, a smooth shading normal, and what is needed to spawn
 // secondary rays without re-hitting the surface. Shared by the applications that trace scenes.
@@ -23,6 +23,11 @@ namespace revolve::scene {
 
 struct BuildSettings {
   bool mesh = false;            // tessellate every profile instead of tracing it exactly
+  // Trace every profile as Embree's linear cone curve instead (ConeCurveGeometry); the scene is
+  // refused, naming the first object whose profile it cannot express or that is scaled. Its kernel
+  // assumes unit ray directions: rays are handed to Embree normalised (t scaled back), and an
+  // instance's scale would make them other lengths again in object space.
+  bool embreeCone = false;
   std::uint32_t slices = 64;    // azimuthal steps of the mesh
   BuildOptions options;         // the exact surfaces' search structure
   bool countStats = false;      // MIBIT counters (slower); read with EmbreeScene::stats()
@@ -100,6 +105,7 @@ class EmbreeScene {
   std::vector<std::uint32_t> quadMaterials_;
   app::Scene top_;
   double buildSeconds_ = 0;
+  bool unitDirections_ = false;  // Embree's cone curves need them
 };
 
 }  // namespace revolve::scene

@@ -106,6 +106,16 @@ inline std::vector<BadCase> badCases() {
       {"UnwritableOutput", kScene, {"-o", "no/such/folder/out.png"}, "no/such/folder/out.png: cannot create a file there: No such file or directory", kBottleCsv, true},
       {"UnknownImageExtension", kScene, {"-o", "out.jpg"}, R"(out.jpg: unsupported image extension ".jpg")", kBottleCsv, true},
       {"UnwritableStats", kScene, {"--stats", "no/such/stats.json"}, "no/such/stats.json: cannot create a file", kBottleCsv, true},
+      // Embree's linear cone curve: a flat step between two cones, and a scaled instance.
+      {"EmbreeConeCannotExpressAStep", replaced(kScene, "[0.5, 0.8], [0, 1]", "[0.5, 0.8], [0.3, 0.8], [0.3, 1], [0, 1]"),
+       {"--geometry", "embree-cone"},
+       "object 0 (profile \"ball\") cannot be traced as Embree's linear cone curve: the segment from profile point 2 "
+       "(r = 0.5, z = 0.8) to profile point 3 (r = 0.3, z = 0.8) is horizontal",
+       kBottleCsv, true},
+      {"EmbreeConeScaledObject", kScene, {"--geometry", "embree-cone"},
+       "object 1 (profile \"bottle\") is scaled by (0.5, 0.5, 0.5): Embree's linear cone curve kernel assumes unit ray "
+       "directions",
+       kBottleCsv, true},
   };
 }
 

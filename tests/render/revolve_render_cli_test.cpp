@@ -63,6 +63,22 @@ TEST(RevolveRenderCliTest, RendersPngAndExrOfTheRequestedSizeAndWritesStats) {
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv", "image.png", "image.exr", "stats.json"}));
 }
 
+// Embree's own linear cone curve in place of revolve's geometry, for the scenes it can express.
+TEST(RevolveRenderCliTest, RendersWithEmbreeConeCurves) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", testing::replaced(kScene, R"(, "scale": 0.5)", ""));
+  dir.write("bottle.csv", kBottleCsv);
+  const Result cone = runRender(dir.path(), {"scene.json", "-o", "image.png", "--geometry", "embree-cone", "--stats", "stats.json"});
+  ASSERT_EQ(cone.status, 0) << cone.err;
+  OIIO::ImageBuf image(dir / "image.png");
+  ASSERT_TRUE(image.read()) << image.geterror();
+  EXPECT_EQ(image.spec().width, 8);
+  const nlohmann::json stats = nlohmann::json::parse(readWholeFile(dir / "stats.json"));
+  EXPECT_EQ(stats["geometry"], "embree-cone");
+  EXPECT_GT(stats["memory"]["revolve_bytes"].get<long>(), 0);  // the shading normals
+  EXPECT_EQ(stats["mibit"]["queries"].get<long>(), 0);                 // no revolve geometry traced
+}
+
 class RevolveRenderBadInputTest : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(RevolveRenderBadInputTest, OneLineNonZeroExitNoImageAndTheOldImageUntouched) {

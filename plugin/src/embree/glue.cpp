@@ -1,6 +1,8 @@
-// Embree objects: the user geometry, filters, point queries and the tessellated mesh. Everything
+// Embree objects: the user geometry, filters, point queries, the tessellated mesh and Embree's own
+// cone curve. Everything
 // that calls Embree lives here and in ray_callbacks.h (the per-ray callbacks, compiled per
 // instruction set), so that a port to Embree 4 is these two files' work.
+#include "cone_curve.h"
 #include "embree/payload.h"
 #include "isa/query_kernels.h"
 #include "queries.h"
@@ -155,6 +157,54 @@ RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std
   std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   rtcCommitGeometry(geometry);
   return geometry;
+}
+
+std::optional<std::string> coneCurveLimitation(const Profile& profile) {
+  auto layout = detail::layOutConeCurve(profile);
+  if (auto* reason = std::get_if<std::string>(&layout)) return std::move(*reason);
+  return std::nullopt;
+}
+
+ConeCurveGeometry::ConeCurveGeometry(RTCDevice device, const Profile& profile) {
+  auto laidOut = detail::layOutConeCurve(profile);
+  if (auto* reason = std::get_if<std::string>(&laidOut)) throw std::invalid_argument(*reason);
+  detail::ConeCurveLayout& layout = std::get<detail::ConeCurveLayout>(laidOut);
+  geometry_ = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE);
+  if (geometry_ == nullptr) {
+    throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE) failed: " + deviceError(device));
+  }
+  const std::size_t vertexCount = layout.vertices.size() / 4, coneCount = layout.firstVertex.size();
+  void* vertices = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                           vertexCount);
+  void* indices = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(std::uint32_t),
+                                          coneCount);
+  void* flags = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_FLAGS, 0, RTC_FORMAT_UCHAR, 1, coneCount);
+  if (vertices == nullptr || indices == nullptr || flags == nullptr) {
+    rtcReleaseGeometry(geometry_);
+    throw std::runtime_error("allocating a cone curve of " + std::to_string(coneCount) + " cones failed: " +
+                             deviceError(device));
+  }
+  std::memcpy(vertices, layout.vertices.data(), layout.vertices.size() * sizeof(float));
+  std::memcpy(indices, layout.firstVertex.data(), coneCount * sizeof(std::uint32_t));
+  std::memcpy(flags, layout.flags.data(), coneCount);
+  rtcCommitGeometry(geometry_);
+  rising_ = std::move(layout.rising);
+  firstSegment_ = layout.firstSegment;
+  startDisc_ = layout.startDisc;
+  endDisc_ = layout.endDisc;
+}
+
+ConeCurveGeometry::~ConeCurveGeometry() {
+  if (geometry_ != nullptr) rtcReleaseGeometry(geometry_);
+}
+
+std::uint32_t ConeCurveGeometry::profileSegment(unsigned primID, float u, Vec3 ng) const noexcept {
+  // Embree gives a disc's hit u = 0 (its first end) or 1 and Ng = -+(p1 - p0), along the axis; a
+  // cone's hit has 0 < u < 1 before rounding and Ng off the axis.
+  const bool onAxis = ng.x == 0.0f && ng.y == 0.0f;
+  if (startDisc_ && primID == 0 && u == 0.0f && onAxis) return 0;
+  if (endDisc_ && primID + 1 == coneCount() && u == 1.0f && onAxis) return firstSegment_ + coneCount();
+  return firstSegment_ + primID;
 }
 
 }  // namespace revolve
