@@ -1,6 +1,6 @@
 #include "renderer.h"
 
-#include "camera.h"
+#include "scene/camera.h"
 
 #include <tbb/task_arena.h>
 #include <tbb/parallel_for.h>
@@ -23,7 +23,7 @@ RenderResult render(const io::SceneDescription& description, const scene::Embree
   for (const io::SceneMaterial& m : description.materials) materials.emplace_back(m);
   const Lights lights(description.lights, description.environment);
   const Integrator integrator(scene, materials, lights, settings.integrator);
-  const Camera camera(description.camera, settings.width, settings.height);
+  const scene::Camera camera(description.camera, settings.width, settings.height);
 
   RenderResult result;
   result.image.width = settings.width;

@@ -7,7 +7,7 @@
 // - Whitted's diffuse shading of a (polyline) sphere under one point light is a I cos / (pi d^2).
 #include "render_support.h"
 
-#include "camera.h"
+#include "scene/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -126,7 +126,7 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
   render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted, 1);
   settings.width = settings.height = 40;
   const testing::RenderRun run = renderText(scene, settings);
-  const render::Camera camera(run.description.camera, settings.width, settings.height);
+  const scene::Camera camera(run.description.camera, settings.width, settings.height);
   int checked = 0;
   for (int y = 0; y < settings.height; ++y) {
     for (int x = 0; x < settings.width; ++x) {

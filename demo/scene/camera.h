@@ -1,4 +1,5 @@
-// A pinhole camera from the scene's from / to / up / vertical field of view.
+// A pinhole camera from the scene's from / to / up / vertical field of view: the renderer's camera rays
+// and picking's ray through a pixel are the same rays.
 #pragma once
 
 #include "common/vector_math.h"
@@ -7,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace revolve::render {
+namespace revolve::scene {
 
 class Camera {
  public:
@@ -35,4 +36,4 @@ class Camera {
   Vec3 origin_{}, forward_{}, right_{}, up_{};
 };
 
-}  // namespace revolve::render
+}  // namespace revolve::scene
