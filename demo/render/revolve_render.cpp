@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -25,11 +26,12 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
-  bool noMonotoneSplit = false, noRangeSearch = false, noShadows = false;
+  bool noMonotoneSplit = false, noRangeSearch = false, noShadows = false, noRegularize = false, filteredShadows = false;
+  double exposure = 0;
 };
 
 scene::BuildSettings buildSettings(const Options& options) {
@@ -55,7 +57,11 @@ void writeStats(const Options& options, const render::RenderSettings& settings, 
   json["spp"] = settings.spp;
   json["integrator"] = options.integrator;
   json["depth"] = settings.integrator.depth;
+  if (settings.integrator.kind == render::IntegratorKind::path) json["regularize"] = settings.integrator.regularize;
+  else json["filtered_shadows"] = settings.integrator.filteredShadows;
   json["seed"] = settings.seed;
+  json["filter"] = options.filter;
+  json["exposure"] = options.exposure;
   json["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   json["geometry"] = options.geometry;
   json["objects"] = objects;
@@ -113,6 +119,9 @@ void pickObject(const Options& options, const io::SceneDescription& description,
 
 void run(const Options& options) {
   if (!options.pick.empty()) {
+    // Picking prints what lies under a pixel and renders nothing: an output would stay unwritten.
+    if (!options.output.empty()) throw std::runtime_error("-o " + options.output + ": --pick renders no image; leave -o out");
+    if (!options.stats.empty()) throw std::runtime_error("--stats " + options.stats + ": --pick renders nothing to report; leave --stats out");
     const io::SceneDescription description = io::readScene(options.scene);
     const int width = options.width > 0 ? options.width : description.camera.width.value_or(640);
     const int height = options.height > 0 ? options.height : description.camera.height.value_or(480);
@@ -134,17 +143,25 @@ void run(const Options& options) {
   settings.height = options.height > 0 ? options.height : description.camera.height.value_or(480);
   settings.spp = options.spp > 0 ? options.spp : description.camera.spp.value_or(16);
   settings.seed = options.seed;
+  settings.filter = options.filter == "box" ? render::PixelFilter::box : render::PixelFilter::tent;
   settings.threads = options.threads;
   settings.integrator.kind = options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
-  settings.integrator.depth = options.depth > 0 ? options.depth : (options.integrator == "whitted" ? 4 : 8);
+  // Whitted's default depth lets hollow glass through: five levels (four crossings of its walls and
+  // the ray beyond), and three more for glass seen in glass or in a mirror.
+  settings.integrator.depth = options.depth > 0 ? options.depth : 8;
   settings.integrator.shadows = !options.noShadows;
+  settings.integrator.regularize = !options.noRegularize;
+  settings.integrator.filteredShadows = options.filteredShadows;
 
   const scene::EmbreeScene built(description, buildSettings(options));
   render::ProgressReport progress;
   const render::RenderResult result =
       render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
   progress.finish();
-  render::writeImage(output, result.image);
+  render::Image image = result.image;
+  const float scale = float(std::exp2(options.exposure));
+  for (float& value : image.pixels) value *= scale;
+  render::writeImage(output, image);
   if (!options.stats.empty()) writeStats(options, settings, built, result, description.objects.size());
 }
 
@@ -162,9 +179,21 @@ int main(int argc, char** argv) {
   app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the paper's ray tracer")
       ->check(CLI::IsMember({"path", "whitted"}))
       ->capture_default_str();
-  app.add_option("--depth", options.depth, "path: most surface hits a path has (default 8); whitted: ray levels, 1 = ray casting (default 4)")
+  app.add_option("--depth", options.depth,
+                 "path: most surface hits a path has; whitted: ray levels, 1 = ray casting (default 8 for both; hollow glass needs 5)")
       ->check(CLI::Range(1, 64));
   app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
+  app.add_flag("--filtered-shadows", options.filteredShadows,
+               "whitted: shadow rays pass straight through glass, dimmed by its Fresnel transmission and tint (as POV-Ray's)");
+  app.add_flag("--no-regularize", options.noRegularize,
+               "path: no path regularisation (unbiased: for reference renders; the default roughens glossy metal after the first "
+               "diffuse or glossy bounce, which removes the fireflies of caustics)");
+  app.add_option("--filter", options.filter,
+                 "pixel filter of more than one sample a pixel: tent (radius 1 pixel) or box (the pixel's square)")
+      ->check(CLI::IsMember({"tent", "box"}))
+      ->capture_default_str();
+  app.add_option("--exposure", options.exposure, "scale the image by 2^EV before writing it (default 0)")
+      ->check(CLI::Range(-64.0, 64.0));
   app.add_option("--geometry", options.geometry, "how surfaces of revolution are traced (mesh: tessellated with --slices)")
       ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
       ->capture_default_str();
