@@ -24,7 +24,10 @@ struct RayCounts {
 
 struct IntegratorSettings {
   IntegratorKind kind = IntegratorKind::path;
-  int depth = 8;         // path: most surface hits a path has; whitted: ray levels (1 = ray casting)
+  // path: most surface hits a path has; whitted: ray levels (1 = ray casting). Whitted's 8 lets
+  // hollow glass through (five levels: four crossings of its walls and the ray beyond) with three
+  // to spare for glass seen in glass or in a mirror.
+  int depth = 8;
   bool shadows = true;   // whitted: shadow rays to the lights (off: the paper's Example 1)
   int rouletteAfter = 3;  // path: Russian roulette from this many hits on
   // path: regularise glossy metal after the first diffuse or glossy bounce (Material::regularized).

@@ -1,6 +1,7 @@
 // revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
 // ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
 // for comparison). Options and the scene format are documented in README.md.
+#include "glass_checks.h"
 #include "image_output.h"
 #include "io/scene_file.h"
 #include "io/text_files.h"
@@ -135,6 +136,9 @@ void run(const Options& options) {
   for (const io::SceneProfile& profile : description.profiles) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
   }
+  for (const std::string& warning : render::glassWarnings(description)) {
+    std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  }
   render::checkWritable(output);
   if (!options.stats.empty()) render::checkWritable(options.stats);
 
@@ -146,9 +150,7 @@ void run(const Options& options) {
   settings.filter = options.filter == "box" ? render::PixelFilter::box : render::PixelFilter::tent;
   settings.threads = options.threads;
   settings.integrator.kind = options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
-  // Whitted's default depth lets hollow glass through: five levels (four crossings of its walls and
-  // the ray beyond), and three more for glass seen in glass or in a mirror.
-  settings.integrator.depth = options.depth > 0 ? options.depth : 8;
+  settings.integrator.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
   settings.integrator.shadows = !options.noShadows;
   settings.integrator.regularize = !options.noRegularize;
   settings.integrator.filteredShadows = options.filteredShadows;

@@ -157,5 +157,49 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
   EXPECT_GT(checked, 300);
 }
 
+// A hollow tube of index-1 glass (no reflection, rays straight through) under a uniform sky: the
+// ray through the image's centre crosses four walls, so Whitted shows the sky from five levels on
+// (the default, 8, included) and black below.
+TEST(IntegratorClosedFormsTest, WhittedSeesThroughHollowGlassFromFiveLevels) {
+  const std::string scene = R"({"camera": {"from": [0, -6, 0], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 20},
+      "profiles": {"tube": {"points": [[0.9, -1], [1, -1], [1, 1], [0.9, 1], [0.9, -1]]}},
+      "materials": {"clear": {"type": "glass", "ior": 1}},
+      "objects": [{"profile": "tube", "material": "clear"}],
+      "environment": {"color": [0.7, 0.7, 0.7]}})";
+  for (const int depth : {0, 4, 5}) {
+    render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted);
+    settings.width = 9, settings.height = 7;  // the centre pixel's ray is the camera's axis
+    if (depth > 0) settings.integrator.depth = depth;
+    const testing::RenderRun run = renderText(scene, settings);
+    EXPECT_EQ(run.result.image.at(4, 3).g, depth == 4 ? 0.0f : 0.7f) << "depth " << (depth > 0 ? depth : settings.integrator.depth);
+  }
+}
+
+// Filtered shadows: a point light above a glass disc over a diffuse floor. Straight down, the
+// shadow ray crosses the disc's two faces at normal incidence, each passing 1 - F = 1 - ((n - 1) /
+// (n + 1))^2 of the light times the tint; the floor under it shows a I / (pi d^2) times that.
+// Without filtering, the disc's shadow is black.
+TEST(IntegratorClosedFormsTest, WhittedFilteredShadowsPassFresnelTransmissionAndTint) {
+  const double albedo = 0.5, intensity = 40, height = 10, ior = 1.5, tint = 0.8;
+  const std::string scene = R"({"camera": {"from": [6, 0, 1], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 10},
+      "profiles": {"disc": {"points": [[0, 4], [2, 4], [2, 5], [0, 5]]}},
+      "materials": {"floor": {"type": "diffuse", "color": [0.5, 0.5, 0.5]},
+                    "glass": {"type": "glass", "ior": 1.5, "tint": [0.8, 0.8, 0.8]}},
+      "objects": [{"profile": "disc", "material": "glass"}],
+      "quads": [{"corners": [[-50, -50, 0], [50, -50, 0], [50, 50, 0], [-50, 50, 0]], "material": "floor"}],
+      "lights": [{"type": "point", "position": [0, 0, 10], "intensity": [40, 40, 40]}]})";
+  const double f = (ior - 1) / (ior + 1) * (ior - 1) / (ior + 1);
+  const double unshadowed = albedo / 3.14159265358979323846 * intensity / (height * height);
+  for (const bool filtered : {false, true}) {
+    render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted);
+    settings.width = 9, settings.height = 7;
+    settings.integrator.filteredShadows = filtered;
+    const testing::RenderRun run = renderText(scene, settings);
+    const double expected = filtered ? unshadowed * (1 - f) * tint * (1 - f) * tint : 0.0;
+    // The centre ray meets the floor within a float rounding of the origin: cos and d are 1 and 10.
+    EXPECT_NEAR(run.result.image.at(4, 3).g, expected, 1e-5 * unshadowed) << (filtered ? "filtered" : "opaque");
+  }
+}
+
 }  // namespace
 }  // namespace revolve
