@@ -1,6 +1,7 @@
 // revolve-lidar: simulated laser range-finder scans of a scene file (the renderer's format), every
 // surface of revolution traced exactly by revolve (or tessellated, for comparison). The sensor, the
 // poses and the outputs are described in README.md, "Robot range-finding".
+#include "common/counted.h"
 #include "io/poses_file.h"
 #include "io/scan_files.h"
 #include "io/scene_file.h"
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace {
@@ -26,6 +28,7 @@ struct Options {
   std::string scene, sensor, poses, output, plot, geometry = "mibit";
   std::uint32_t slices = 64;
   int threads = 0;
+  std::optional<std::size_t> plotRing;
 };
 
 void run(const Options& options) {
@@ -38,6 +41,11 @@ void run(const Options& options) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
   }
   const io::SensorDescription sensor = io::readSensor(options.sensor);
+  if (options.plotRing && *options.plotRing >= sensor.elevations.size()) {
+    throw std::runtime_error("--plot-ring " + std::to_string(*options.plotRing) + ": " + options.sensor + " has " +
+                             app::counted(sensor.elevations.size(), "ring") + ", numbered from 0");
+  }
+  if (options.plotRing && options.plot.empty()) throw std::runtime_error("--plot-ring needs --plot");
   // Without poses, one: the robot at the origin, so the sensor's pose is its world pose.
   const std::vector<io::RobotPose> poses = options.poses.empty() ? std::vector<io::RobotPose>{io::RobotPose{}}
                                                                  : io::readPosesCsv(options.poses);
@@ -52,17 +60,17 @@ void run(const Options& options) {
   const io::ScanTable scan = lidar.scan(poses, options.threads);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   io::writeScan(options.output, scan);
-  if (!options.plot.empty()) robot::writeScanPlot(options.plot, {description, sensor, poses, scan});
+  if (!options.plot.empty()) robot::writeScanPlot(options.plot, {description, sensor, poses, scan, options.plotRing});
 
   const std::string geometry = build.mesh ? "mesh, " + std::to_string(build.slices) + " slices" : "exact";
   std::size_t returns = 0;
   for (const io::BeamReturn& beam : scan.beams) returns += std::isinf(beam.range) ? 0 : 1;
-  std::printf("revolve-lidar: %zu pose%s x %zu beams (%zu rings x %zu azimuths): %zu returns; traced in %.3g s (%.4g scans/s, "
-              "%d threads, %s geometry)\n",
-              poses.size(), poses.size() == 1 ? "" : "s", lidar.beamsPerPose(), scan.rings(), scan.azimuths.size(), returns, seconds,
-              seconds > 0 ? double(poses.size()) / seconds : 0.0,
-              options.threads > 0 ? options.threads : tbb::info::default_concurrency(),
-              geometry.c_str());
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  std::printf("revolve-lidar: %s x %s (%s x %s): %s; traced in %.3g s (%.4g scans/s, %s, %s geometry)\n",
+              app::counted(poses.size(), "pose").c_str(), app::counted(lidar.beamsPerPose(), "beam").c_str(),
+              app::counted(scan.rings(), "ring").c_str(), app::counted(scan.azimuths.size(), "azimuth").c_str(),
+              app::counted(returns, "return").c_str(), seconds, seconds > 0 ? double(poses.size()) / seconds : 0.0,
+              app::counted(std::size_t(threads), "thread").c_str(), geometry.c_str());
 }
 
 }  // namespace
@@ -76,6 +84,7 @@ int main(int argc, char** argv) {
   app.add_option("--poses", options.poses, "robot poses (CSV, header x,y,z,yaw or x,y,yaw); default: one, at the origin");
   app.add_option("-o,--output", options.output, "scan to write: .csv (LaserScan-shaped table) or .pcd (ASCII PCD v0.7)")->required();
   app.add_option("--plot", options.plot, "also write a top-down PNG of the scan over the scene's footprint");
+  app.add_option("--plot-ring", options.plotRing, "plot only this ring (0 = the lowest) of a 3-D scan");
   app.add_option("--geometry", options.geometry, "surfaces of revolution traced exactly (mibit) or as triangle meshes (mesh)")
       ->check(CLI::IsMember({"mibit", "mesh"}))
       ->capture_default_str();

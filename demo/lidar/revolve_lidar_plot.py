@@ -78,14 +78,19 @@ def main():
         ax.add_collection(LineCollection(data["walls"], colors=WALL, linewidths=3, zorder=3))
 
     # The scan: each pose's beams to its returns, the returns, the sensor and its heading.
+    # Every beam_step-th return's beam (revolve-lidar thins them to a couple of thousand).
+    step, count = data["beam_step"], 0
     for pose in data["poses"]:
         origin = pose["origin"]
-        beams = [[origin, point] for point in pose["returns"]]
+        beams = [[origin, point] for i, point in enumerate(pose["returns"], start=count) if i % step == 0]
+        count += len(pose["returns"])
         if beams:
             ax.add_collection(LineCollection(beams, colors=BEAM, alpha=0.12, linewidths=0.6, zorder=4))
     returns = [point for pose in data["poses"] for point in pose["returns"]]
     if returns:
-        ax.scatter(*zip(*returns), s=4, color=RETURN, zorder=5, linewidths=0)
+        # Dots shrink as returns multiply, so that a 3-D scan's rings stay apart.
+        size = 4 if len(returns) <= 20000 else 1
+        ax.scatter(*zip(*returns), s=size, color=RETURN, zorder=5, linewidths=0)
     for pose in data["poses"]:
         (x, y), (hx, hy) = pose["origin"], pose["heading"]
         arrow = 0.05 * max(x1 - x0, y1 - y0)

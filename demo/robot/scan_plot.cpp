@@ -208,22 +208,32 @@ void writeScanPlot(const std::string& path, const ScanPlotInput& input) {
 
   nlohmann::json data = footprintOf(input.scene, sensorHeight);
   data["poses"] = nlohmann::json::array();
-  const std::size_t beamsPerPose = input.scan.rings() * input.scan.azimuths.size();
+  const std::size_t azimuths = input.scan.azimuths.size(), beamsPerPose = input.scan.rings() * azimuths;
+  const auto plotted = [&](std::size_t beam) { return !input.ring || beam / azimuths == *input.ring; };
+  std::size_t returnCount = 0;
+  for (std::size_t i = 0; i < input.scan.beams.size(); ++i) {
+    if (plotted(i % beamsPerPose) && !std::isinf(input.scan.beams[i].range)) ++returnCount;
+  }
+  const std::size_t beamStep = (returnCount + kMaxPlottedBeams - 1) / kMaxPlottedBeams;
+  data["beam_step"] = std::max<std::size_t>(beamStep, 1);
   for (std::size_t pose = 0; pose < input.scan.poses; ++pose) {
     const Vec3d heading = frames[pose].rotate({1, 0, 0});
     const double h = std::hypot(heading[0], heading[1]);  // zero for a sensor looking straight up or down
     nlohmann::json returns = nlohmann::json::array();
     for (std::size_t i = 0; i < beamsPerPose; ++i) {
       const io::BeamReturn& b = input.scan.beams[pose * beamsPerPose + i];
-      if (!std::isinf(b.range)) returns.push_back({b.x, b.y});
+      if (plotted(i) && !std::isinf(b.range)) returns.push_back({b.x, b.y});
     }
     data["poses"].push_back({{"origin", {frames[pose].origin[0], frames[pose].origin[1]}},
                              {"heading", {h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0}},
                              {"returns", std::move(returns)}});
   }
   std::ostringstream title;
-  title << input.scene.file << ": " << input.scan.rings() << " x " << input.scan.azimuths.size() << " beams from "
-        << input.scan.poses << (input.scan.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
+  title << input.scene.file << ": ";
+  if (input.ring) title << "ring " << *input.ring << " of ";
+  title << input.scan.rings() << " x " << azimuths << " beams from " << input.scan.poses << (input.scan.poses == 1 ? " pose" : " poses")
+        << ", sensor at z = " << sensorHeight << " m";
+  if (beamStep > 1) title << "; beams drawn for 1 return in " << beamStep;
   data["title"] = title.str();
   io::writeFileAtomically(path, [&](std::FILE* png) { runPlotter(data, png); });
 }
