@@ -13,12 +13,29 @@
 
 #include "common/counter_hash.h"
 
+#include <array>
 #include <cstdint>
 #include <utility>
 
 namespace revolve::render {
 
 using app::mix64;
+
+// Sobol's second dimension, a byte of the index at a time (RandomStream::sobolSecond).
+constexpr std::array<std::array<std::uint32_t, 256>, 4> sobolByteTable() {
+  std::array<std::uint32_t, 32> v{};
+  v[0] = 1u << 31;
+  for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+  std::array<std::array<std::uint32_t, 256>, 4> table{};
+  for (int byte = 0; byte < 4; ++byte) {
+    for (std::uint32_t bits = 0; bits < 256; ++bits) {
+      for (int j = 0; j < 8; ++j) {
+        if (bits >> j & 1) table[byte][bits] ^= v[8 * byte + j];
+      }
+    }
+  }
+  return table;
+}
 
 class RandomStream {
  public:
@@ -30,15 +47,15 @@ class RandomStream {
   // The next two-dimensional decision's point, uniform on [0, 1)^2: this sample's point of the
   // pixel's scrambled Sobol set for the decision.
   std::pair<float, float> next2D() {
-    const std::uint32_t seed = std::uint32_t(mix64(pixel_ ^ mix64(~std::uint64_t(pair_++))));
-    const std::uint32_t index = nestedUniformScramble(sample_, seed);
-    const std::uint32_t x = nestedUniformScramble(reverseBits(index), mix32(seed, 1));
-    const std::uint32_t y = nestedUniformScramble(sobolSecond(index), mix32(seed, 2));
+    // Seeds for the decision: the index shuffle's, then the two coordinates' scrambles.
+    const std::uint64_t shuffle = mix64(pixel_ ^ (0x9e3779b97f4a7c15ull * ++pair_)), scramble = mix64(shuffle);
+    const std::uint32_t index = nestedUniformScramble(sample_, std::uint32_t(shuffle));
+    const std::uint32_t x = nestedUniformScramble(reverseBits(index), std::uint32_t(scramble));
+    const std::uint32_t y = nestedUniformScramble(sobolSecond(index), std::uint32_t(scramble >> 32));
     return {float(x >> 8) * 0x1p-24f, float(y >> 8) * 0x1p-24f};
   }
 
  private:
-  static std::uint32_t mix32(std::uint32_t seed, std::uint32_t k) { return std::uint32_t(mix64((std::uint64_t(seed) << 32) | k)); }
   static std::uint32_t reverseBits(std::uint32_t x) {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
@@ -46,14 +63,15 @@ class RandomStream {
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     return (x >> 16) | (x << 16);
   }
-  // Sobol's second dimension: direction numbers v_0 = 2^31, v_k = v_(k-1) xor (v_(k-1) >> 1).
+  // Sobol's second dimension: the xor of direction numbers v_k (v_0 = 2^31, v_k = v_(k-1) xor
+  // (v_(k-1) >> 1)) over the index's set bits k, a byte at a time from a table: the scrambled
+  // index's bits are random, and a loop branching on each of them cost more than the rest of a
+  // sample's random numbers.
   static std::uint32_t sobolSecond(std::uint32_t index) {
-    std::uint32_t result = 0;
-    for (std::uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
-      if (index & 1) result ^= v;
-    }
-    return result;
+    return kSobolBytes[0][index & 0xff] ^ kSobolBytes[1][(index >> 8) & 0xff] ^ kSobolBytes[2][(index >> 16) & 0xff] ^
+           kSobolBytes[3][index >> 24];
   }
+  static constexpr std::array<std::array<std::uint32_t, 256>, 4> kSobolBytes = sobolByteTable();
   // Laine & Karras's hash: each bit of the result depends on that bit and the lower ones only.
   static std::uint32_t laineKarras(std::uint32_t x, std::uint32_t seed) {
     x += seed;
