@@ -1,4 +1,4 @@
-// revolve-clearance: the clearance of a vertical-cylinder robot (seed 001's collision test) at each
+// revolve-clearance: the clearance of a vertical-cylinder robot (the GLBot simulator's collision test) at each
 // pose of POSES.csv among a scene file's obstacles: exact for upright surfaces of revolution, a
 // lower bound where said (README.md, "Robot range-finding").
 #include "common/counted.h"

@@ -105,7 +105,7 @@ std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
   return {xy[0], xy[1]};
 }
 
-// Prints the object under the pixel (seed 001's scene editor): index, name, hit point, distance.
+// Prints the object under the pixel (as the GLBot simulator's scene editor): index, name, hit point, distance.
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
   const scene::EmbreeScene built(description, buildSettings(options));
