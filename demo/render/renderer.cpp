@@ -44,7 +44,7 @@ Color PixelEstimator::pixel(int x, int y, RayCounts& counts) const {
   Color sum;
   for (int s = 0; s < settings_.spp; ++s) {
     RandomStream random(settings_.seed, pixel, std::uint64_t(s));
-    // One sample: the pixel's centre (the paper's ray casting); more: drawn from the pixel filter.
+    // One sample: the pixel's centre (Baciu, Jia & Lam's ray casting); more: drawn from the pixel filter.
     float jx = 0.5f, jy = 0.5f;
     if (settings_.spp > 1) {
       const auto [u, v] = random.next2D();

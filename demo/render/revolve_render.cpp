@@ -1,5 +1,5 @@
-// revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
-// ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
+// revolve-render: renders a scene file (io/scene_file.h) with path tracing or the Whitted
+// ray tracer of Baciu, Jia & Lam (2001), every surface of revolution traced exactly by revolve inside Embree (or tessellated,
 // for comparison). Options and the scene format are documented in README.md.
 #include "glass_checks.h"
 #include "image_output.h"
@@ -178,13 +178,13 @@ int main(int argc, char** argv) {
   app.add_option("--width", options.width, "image width in pixels (default: the scene's camera.width, else 640)")->check(CLI::Range(1, 16384));
   app.add_option("--height", options.height, "image height in pixels (default: camera.height, else 480)")->check(CLI::Range(1, 16384));
   app.add_option("--spp", options.spp, "samples per pixel (default: camera.spp, else 16)")->check(CLI::Range(1, 1 << 20));
-  app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the paper's ray tracer")
+  app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the ray tracer of Baciu, Jia & Lam (2001)")
       ->check(CLI::IsMember({"path", "whitted"}))
       ->capture_default_str();
   app.add_option("--depth", options.depth,
                  "path: most surface hits a path has; whitted: ray levels, 1 = ray casting (default 8 for both; hollow glass needs 5)")
       ->check(CLI::Range(1, 64));
-  app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
+  app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, Baciu, Jia & Lam's Example 1)");
   app.add_flag("--filtered-shadows", options.filteredShadows,
                "whitted: shadow rays pass straight through glass, dimmed by its Fresnel transmission and tint (as POV-Ray's)");
   app.add_flag("--no-regularize", options.noRegularize,
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
   app.add_option("--pick", options.pick,
                  "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
-                 "its index, name, hit point and distance, or \"nothing\"");
+                 "its index, name, hit point and distance, or \"nothing\" (no -o or --stats with it)");
   CLI11_PARSE(app, argc, argv);
   try {
     run(options);
