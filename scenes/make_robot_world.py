@@ -12,7 +12,7 @@ import json
 import math
 import os
 
-from make_scenes import barrel, beer_bottle, pedestal_table, pts, r6, traffic_cone, wine_bottle
+from make_scenes import GAP, barrel, beer_bottle, pedestal_table, pts, r6, traffic_cone, wine_bottle
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLES = os.path.join(HERE, "..", "examples", "robot")
@@ -60,7 +60,7 @@ def robot_world():
     }
     objects = []
 
-    def add(profile, material, name, x, y, z=0.0, rotate=None):
+    def add(profile, material, name, x, y, z=GAP, rotate=None):
         o = {"profile": profile, "material": material, "translate": [r6(x), r6(y), r6(z)], "name": name}
         if rotate:
             o["rotate"] = rotate
@@ -71,15 +71,16 @@ def robot_world():
     for i, (x, y) in enumerate([(3.0, 2.45), (7.5, 2.35), (12.9, 4.0), (10.2, 7.3)]):
         add("barrel", "blue_paint", f"barrel {i + 1}", x, y)
     # On its side: a quarter turn about x lays the axis along -y; the bulge (r = 0.33) rests on the floor.
-    add("barrel", "blue_paint", "tipped barrel", 10.6, 1.9, 0.33, [1, 0, 0, 90])
+    add("barrel", "blue_paint", "tipped barrel", 10.6, 1.9, 0.33 + GAP, [1, 0, 0, 90])
     for i, (x, y) in enumerate([(0.6, 2.5), (8.6, 0.4), (13.5, 7.5)]):
         add("bin", "green_plastic", f"bin {i + 1}", x, y)
     for i, (x, y) in enumerate([(5.0, 1.6), (5.6, 1.25)]):
         add("cone", "orange", f"cone {i + 1}", x, y)
     add("table", "wood", "table", 11.2, 6.4)
-    add("wine_bottle", "green_glass", "bottle 1", 11.05, 6.5, 0.75)
-    add("wine_bottle", "green_glass", "bottle 2", 11.3, 6.55, 0.75)
-    add("beer_bottle", "amber_glass", "bottle 3", 11.25, 6.25, 0.75)
+    top = 0.75 + 2 * GAP  # the table's top face, the table standing GAP above the floor
+    add("wine_bottle", "green_glass", "bottle 1", 11.05, 6.5, top)
+    add("wine_bottle", "green_glass", "bottle 2", 11.3, 6.55, top)
+    add("beer_bottle", "amber_glass", "bottle 3", 11.25, 6.25, top)
 
     quads = [
         floor(0, 0, 14, 3), floor(9, 3, 14, 8),

@@ -10,6 +10,10 @@ import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
+# Every object stands this far (0.1 mm) above what it stands on. Faces that coincide (a glass's
+# foot on a table top) speckle, each pixel showing whichever of the two the rounding hits first.
+GAP = 1e-4
+
 
 def r6(x):
     return round(x, 6)
@@ -216,14 +220,14 @@ def patio():
         objects.append(o)
 
     tables = [(-1.6, 1.0), (0.4, 2.6), (1.7, 0.7)]
-    top = 0.74
+    top = 0.74 + GAP  # the table's top face, the table standing GAP above the floor
     for t, (tx, ty) in enumerate(tables):
-        add("table", "table_metal", tx, ty, name=f"table {t + 1}")
+        add("table", "table_metal", tx, ty, GAP, name=f"table {t + 1}")
         # Two chairs facing each other across the table, their backs away from it.
         facing = [math.radians(200 + 35 * t), math.radians(20 + 35 * t)]
         for c, a in enumerate(facing):
             cx, cy = tx + 0.62 * math.cos(a), ty + 0.62 * math.sin(a)
-            add("chair_seat", "wood", cx, cy, name=f"chair {2 * t + c + 1}")
+            add("chair_seat", "wood", cx, cy, GAP, name=f"chair {2 * t + c + 1}")
             # Back posts behind the seat (away from the table), then the rail across their tops.
             bx, by = cx + 0.17 * math.cos(a), cy + 0.17 * math.sin(a)
             sx, sy = -math.sin(a), math.cos(a)
@@ -243,7 +247,7 @@ def patio():
                  ("salad_bowl", "steel", 0.12, 250)]
         for profile, material, r, a in wares:
             x, y = at(r, math.radians(a))
-            add(profile, material, x, y, top)
+            add(profile, material, x, y, top + GAP)
 
     # Rails: posts along the back and both sides of the patio, a rail over them (quads).
     posts = []
@@ -253,7 +257,7 @@ def patio():
         for i in range(12):
             posts.append((side, -2.4 + 6.6 * i / 12))
     for x, y in posts:
-        add("rail_post", "white_paint", x, y)
+        add("rail_post", "white_paint", x, y, GAP)
     assert len(objects) == 100, len(objects)
 
     quads = [{"corners": [[-30, -30, 0], [30, -30, 0], [30, 30, 0], [-30, 30, 0]], "material": "stone"}]
@@ -320,9 +324,9 @@ def still_life():
         "cream": {"type": "diffuse", "color": [0.85, 0.8, 0.7]},
         "blue": {"type": "diffuse", "color": [0.1, 0.2, 0.55]},
     }
-    top = 0.75
+    top = r6(0.75 + 2 * GAP)  # on the table's top face, the table standing GAP above the floor
     objects = [
-        {"profile": "table", "material": "walnut", "name": "table"},
+        {"profile": "table", "material": "walnut", "translate": [0, 0, GAP], "name": "table"},
         {"profile": "goblet", "material": "clear_glass", "translate": [-0.2, 0.0, top], "name": "goblet"},
         {"profile": "vase", "material": "copper", "translate": [0.17, 0.12, top], "name": "vase"},
         {"profile": "bottle", "material": "green_glass", "translate": [0.0, 0.2, top], "name": "bottle"},
@@ -370,7 +374,7 @@ def many():
         for j in range(50):
             profile, material = kinds[(i * 7 + j * 3 + (i * j) % 5) % 4]
             objects.append({"profile": profile, "material": material,
-                            "translate": [r6(-15 + 0.75 * i), r6(-2 + 0.75 * j), 0],
+                            "translate": [r6(-15 + 0.75 * i), r6(-2 + 0.75 * j), GAP],
                             "rotate": [0, 0, 1, (i * 37 + j * 11) % 360]})
             n += 1
     dump("many.json", {

@@ -1,7 +1,8 @@
-// revolve-clearance: the clearance of a vertical-cylinder robot (seed 001's collision test) at each
+// revolve-clearance: the clearance of a vertical-cylinder robot (the GLBot simulator's collision test) at each
 // pose of POSES.csv among a scene file's obstacles: exact for upright surfaces of revolution, a
 // lower bound where said (README.md, "Robot range-finding").
 #include "common/command_line.h"
+#include "common/counted.h"
 #include "io/clearance_file.h"
 #include "io/output_set.h"
 #include "io/csv_fields.h"
@@ -83,14 +84,15 @@ void run(const Options& options) {
   io::writeClearanceCsv(outputs.stream(options.output), rows);
   outputs.commit();
   const robot::SceneClearance& worst = results[least];
-  std::printf("revolve-clearance: %zu poses, %zu collide; least clearance %.6g at pose %zu", poses.size(), collisions,
-              worst.clearance, least);
+  std::printf("revolve-clearance: %s, %zu %s; least clearance %.6g at pose %zu", app::counted(poses.size(), "pose").c_str(),
+              collisions, collisions == 1 ? "collides" : "collide", worst.clearance, least);
   if (worst.object >= 0) {
     const std::string name = robot::objectName(description, std::size_t(worst.object));
     std::printf(" (object %lld%s%s%s)", static_cast<long long>(worst.object), name.empty() ? "" : " \"", name.c_str(),
                 name.empty() ? "" : "\"");
   }
-  std::printf("; %zu poses' clearance is a lower bound (tilted objects or sloping quads nearest)\n", bounds);
+  std::printf("; %s a lower bound (tilted objects or sloping quads nearest)\n",
+              bounds == 1 ? "1 pose's clearance is" : (std::to_string(bounds) + " poses' clearances are").c_str());
 }
 
 }  // namespace

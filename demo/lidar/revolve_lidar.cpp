@@ -2,6 +2,7 @@
 // surface of revolution traced exactly by revolve (or tessellated, for comparison). The sensor, the
 // poses and the outputs are described in README.md, "Robot range-finding".
 #include "common/command_line.h"
+#include "common/counted.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scan_files.h"
@@ -29,6 +30,7 @@ struct Options {
   std::string scene, sensor, poses, output, plot, geometry = "mibit", pcdData = "ascii";
   std::uint32_t slices = 64;
   int threads = 0;
+  std::optional<std::size_t> plotRing;
 };
 
 void run(const Options& options, bool pcdDataGiven) {
@@ -47,6 +49,11 @@ void run(const Options& options, bool pcdDataGiven) {
     std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
   }
   const io::SensorDescription sensor = io::readSensor(options.sensor);
+  if (options.plotRing && *options.plotRing >= sensor.elevations.size()) {
+    throw std::runtime_error("--plot-ring " + std::to_string(*options.plotRing) + ": " + options.sensor + " has " +
+                             app::counted(sensor.elevations.size(), "ring") + ", numbered from 0");
+  }
+  if (options.plotRing && options.plot.empty()) throw std::runtime_error("--plot-ring needs --plot");
   // Without poses, one: the robot at the origin, so the sensor's pose is its world pose.
   const std::vector<io::RobotPose> poses = options.poses.empty() ? std::vector<io::RobotPose>{io::RobotPose{}}
                                                                  : io::readPosesCsv(options.poses);
@@ -73,7 +80,7 @@ void run(const Options& options, bool pcdDataGiven) {
   io::ScanWriter writer(outputs.stream(options.output), format, options.pcdData == "binary" ? io::PcdData::binary : io::PcdData::ascii,
                         layout);
   std::optional<robot::ScanPlot> plot;
-  if (!options.plot.empty()) plot.emplace(description, sensor, poses, layout);
+  if (!options.plot.empty()) plot.emplace(description, sensor, poses, layout, options.plotRing);
 
   std::size_t returns = 0;
   double tracing = 0;
@@ -95,11 +102,12 @@ void run(const Options& options, bool pcdDataGiven) {
   }
 
   const std::string geometry = build.mesh ? "mesh, " + std::to_string(build.slices) + " slices" : "exact";
-  std::printf("revolve-lidar: %zu pose%s x %zu beams (%zu rings x %zu azimuths): %zu returns; traced in %.3g s (%.4g scans/s, "
-              "%d threads, %s geometry); %.3g s with writing\n",
-              poses.size(), poses.size() == 1 ? "" : "s", lidar.beamsPerPose(), layout.rings(), layout.azimuths.size(), returns, tracing,
-              tracing > 0 ? double(poses.size()) / tracing : 0.0,
-              options.threads > 0 ? options.threads : tbb::info::default_concurrency(), geometry.c_str(), seconds);
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  std::printf("revolve-lidar: %s x %s (%s x %s): %s; traced in %.3g s (%.4g scans/s, %s, %s geometry); %.3g s with writing\n",
+              app::counted(poses.size(), "pose").c_str(), app::counted(lidar.beamsPerPose(), "beam").c_str(),
+              app::counted(layout.rings(), "ring").c_str(), app::counted(layout.azimuths.size(), "azimuth").c_str(),
+              app::counted(returns, "return").c_str(), tracing, tracing > 0 ? double(poses.size()) / tracing : 0.0,
+              app::counted(std::size_t(threads), "thread").c_str(), geometry.c_str(), seconds);
 }
 
 }  // namespace
@@ -121,6 +129,8 @@ int main(int argc, char** argv) {
                              ->check(CLI::IsMember({"ascii", "binary"}))
                              ->capture_default_str();
   app.add_option("--plot", options.plot, "also write a top-down PNG of the scan over the scene's footprint")->check(app::kNonEmpty);
+  app.add_option("--plot-ring", options.plotRing, "plot only this ring (0 = the lowest) of a 3-D scan")
+      ->check(app::wholeNumberIn<std::size_t>(0, 1u << 16));
   app.add_option("--geometry", options.geometry, "surfaces of revolution traced exactly (mibit) or as triangle meshes (mesh)")
       ->check(CLI::IsMember({"mibit", "mesh"}))
       ->capture_default_str();

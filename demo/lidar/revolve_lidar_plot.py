@@ -27,6 +27,7 @@ WALL = "#4d4d52"
 OBJECT, OBJECT_EDGE = "#c2d4ed", "#738cb8"
 SECTION = "#1a338c"
 BEAM, RETURN = "#f25933", "#cc0d0d"
+MAX_BEAMS = 2000
 SENSOR = "#0d8c26"
 
 
@@ -78,14 +79,21 @@ def main():
         ax.add_collection(LineCollection(data["walls"], colors=WALL, linewidths=3, zorder=3))
 
     # The scan: each pose's beams to its returns, the returns, the sensor and its heading.
+    # Every step-th return's beam, at most MAX_BEAMS of them: the 230,000 beams of a 3-D scan's
+    # eight poses would paint the whole footprint red. The title says when beams are thinned.
+    total = sum(len(pose["returns"]) for pose in data["poses"])
+    step, count = max(1, -(-total // MAX_BEAMS)), 0
     for pose in data["poses"]:
         origin = pose["origin"]
-        beams = [[origin, point] for point in pose["returns"]]
+        beams = [[origin, point] for i, point in enumerate(pose["returns"], start=count) if i % step == 0]
+        count += len(pose["returns"])
         if beams:
             ax.add_collection(LineCollection(beams, colors=BEAM, alpha=0.12, linewidths=0.6, zorder=4))
     returns = [point for pose in data["poses"] for point in pose["returns"]]
     if returns:
-        ax.scatter(*zip(*returns), s=4, color=RETURN, zorder=5, linewidths=0)
+        # Dots shrink as returns multiply, so that a 3-D scan's rings stay apart.
+        size = 4 if len(returns) <= 20000 else 1
+        ax.scatter(*zip(*returns), s=size, color=RETURN, zorder=5, linewidths=0)
     for pose in data["poses"]:
         (x, y), (hx, hy) = pose["origin"], pose["heading"]
         arrow = 0.05 * max(x1 - x0, y1 - y0)
@@ -104,7 +112,8 @@ def main():
         plt.Line2D([], [], color=SENSOR, marker="o", ls="none", label="sensor"),
     ]
     ax.legend(handles=legend, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=7, fontsize=8, frameon=False)
-    ax.set_title(data["title"], pad=24, fontsize=10)
+    title = data["title"] + (f"; beams drawn for 1 return in {step}" if step > 1 else "")
+    ax.set_title(title, pad=24, fontsize=10)
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     fig.tight_layout()

@@ -1,7 +1,7 @@
 // revolve-lidar-bench: the figures of README.md, "Robot range-finding", from one reproducible run.
 //
 //   build/bin/revolve-lidar-bench scenes/robot_world.json --poses examples/robot/path.csv
-//       --out results/robot/lidar_bench.json
+//       --out bench/results/robot/lidar_bench.json
 //
 // Two sensors, noise and resolution off (geometry only): a 2-D scanner of 1,080 beams over 270
 // degrees (a Hokuyo UTM-30LX's layout) and a 3-D one of 16 x 1,800 beams (a Velodyne VLP-16's).

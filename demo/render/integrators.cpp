@@ -30,6 +30,12 @@ ShadingFrame shadingFrame(const scene::WorldHit& hit, Vec3 rayDirection, bool gl
   return f;
 }
 
+// Veach's power heuristic (beta = 2) for the strategy of density `a` against one of density `b`.
+float powerHeuristic(float a, float b) {
+  const float a2 = a * a, b2 = b * b;
+  return a2 > 0 ? a2 / (a2 + b2) : 0;
+}
+
 }  // namespace
 
 Color Integrator::radiance(const Ray& cameraRay, RandomStream& random, RayCounts& counts) const {
@@ -39,42 +45,74 @@ Color Integrator::radiance(const Ray& cameraRay, RandomStream& random, RayCounts
 }
 
 Color Integrator::direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,
-                         bool shadowRays, RandomStream& random, RayCounts& counts) const {
+                         bool shadowRays, bool mis, RandomStream& random, RayCounts& counts) const {
   Color sum;
   for (std::size_t i = 0; i < lights_.count(); ++i) {
     const LightSample light = lights_.sample(i, hit.point, random);
-    const Color f = material.evaluate(wo, light.wi, shading, geometric);
+    Color f = material.evaluate(wo, light.wi, shading, geometric);
     if (f.black() || light.irradiance.black()) continue;
-    if (shadowRays) {
-      Ray shadow;
-      shadow.origin = scene_.spawn(hit, light.wi);
-      // To a point light: the segment up to it (t in units of the unnormalised direction); to the sun: the whole ray.
-      shadow.direction = light.atInfinity ? light.wi : light.position - shadow.origin;
-      shadow.tfar = light.atInfinity ? std::numeric_limits<float>::infinity() : 1.0f;
-      ++counts.shadow;
-      if (scene_.occluded(shadow)) continue;
-    }
+    if (mis && light.pdf > 0) f = powerHeuristic(light.pdf, material.pdf(wo, light.wi, shading)) * f;
+    if (shadowRays) f = f * visibility(hit, light, counts);
     sum += f * light.irradiance;
   }
   return sum;
 }
 
+Color Integrator::visibility(const scene::WorldHit& from, const LightSample& light, RayCounts& counts) const {
+  Ray shadow;
+  shadow.origin = scene_.spawn(from, light.wi);
+  // To a point light: the segment up to it (t in units of the unnormalised direction); to the sun: the whole ray.
+  shadow.direction = light.atInfinity ? light.wi : light.position - shadow.origin;
+  shadow.tfar = light.atInfinity ? std::numeric_limits<float>::infinity() : 1.0f;
+  ++counts.shadow;
+  if (!settings_.filteredShadows) return scene_.occluded(shadow) ? Color{} : Color{1, 1, 1};
+  // Filtered: follow the straight line through every glass surface it crosses. A bound on the
+  // crossings keeps the loop finite whatever the scene; 64 is 32 glass walls in a row.
+  Color filter{1, 1, 1};
+  for (int crossing = 0; crossing < 64; ++crossing) {
+    const std::optional<scene::WorldHit> hit = scene_.intersect(shadow);
+    if (!hit) return filter;
+    const Material& material = materials_[hit->material];
+    filter = filter * material.straightTransmittance(std::abs(dot(light.wi, hit->shadingNormal)));
+    if (filter.black()) return {};
+    shadow.origin = scene_.spawn(*hit, light.wi);
+    if (!light.atInfinity) shadow.direction = light.position - shadow.origin;
+    ++counts.shadow;
+  }
+  return {};
+}
+
 Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
   Color radiance, throughput{1, 1, 1};
+  // The density of the last scatter's direction (0 after a delta lobe or for the camera ray), and
+  // whether the path has scattered off a diffuse or glossy lobe yet (regularisation starts then).
+  float scatterPdf = 0;
+  bool indirect = false;
   for (int hits = 1;; ++hits) {
     const std::optional<scene::WorldHit> hit = scene_.intersect(ray);
     if (!hit) {
-      radiance += throughput * lights_.environment(normalize(ray.direction));
+      const Vec3 d = normalize(ray.direction);
+      Color escaped = lights_.environment(d);
+      // A sun reached by a BSDF sample: its share of the two strategies (the light-sampled share
+      // was added at the vertex that sampled this ray).
+      for (std::size_t i = 0; scatterPdf > 0 && i < lights_.count(); ++i) {
+        const LightSeen light = lights_.seen(i, d);
+        if (light.pdf > 0) escaped += powerHeuristic(scatterPdf, light.pdf) * light.radiance;
+      }
+      radiance += throughput * escaped;
       break;
     }
-    const Material& material = materials_[hit->material];
+    const Material& stored = materials_[hit->material];
+    const Material material = settings_.regularize && indirect ? stored.regularized() : stored;
     const ShadingFrame f = shadingFrame(*hit, ray.direction, material.type() == io::MaterialType::glass);
     if (material.hasSmoothLobe()) {
-      radiance += throughput * direct(*hit, material, f.wo, f.shading, f.geometric, true, random, counts);
+      radiance += throughput * direct(*hit, material, f.wo, f.shading, f.geometric, true, true, random, counts);
     }
     if (hits >= settings_.depth) break;
     const std::optional<ScatterSample> scatter = material.sample(f.wo, f.shading, f.geometric, f.outside, random);
     if (!scatter) break;
+    scatterPdf = scatter->specular ? 0 : scatter->pdf;
+    indirect = indirect || !scatter->specular;
     throughput = throughput * scatter->weight;
     if (hits >= settings_.rouletteAfter) {
       // Continue with probability q, weighting survivors by 1 / q: unbiased, and a dim path ends early.
@@ -96,7 +134,7 @@ Color Integrator::whitted(const Ray& ray, int level, RandomStream& random, RayCo
   const ShadingFrame f = shadingFrame(*hit, ray.direction, glass);
   Color radiance;
   if (material.hasSmoothLobe()) {
-    radiance += direct(*hit, material, f.wo, f.shading, f.geometric, settings_.shadows, random, counts);
+    radiance += direct(*hit, material, f.wo, f.shading, f.geometric, settings_.shadows, false, random, counts);
     // The classic ambient term: diffuse surfaces take the environment seen along their normal.
     if (material.type() == io::MaterialType::diffuse) radiance += material.color() * lights_.environment(f.shading);
   }

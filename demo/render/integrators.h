@@ -1,4 +1,4 @@
-// Radiance along a camera ray: unidirectional path tracing, or the paper's Whitted ray tracer.
+// Radiance along a camera ray: unidirectional path tracing, or the Whitted ray tracer of Baciu, Jia & Lam (2001).
 #pragma once
 
 #include "color.h"
@@ -24,9 +24,18 @@ struct RayCounts {
 
 struct IntegratorSettings {
   IntegratorKind kind = IntegratorKind::path;
-  int depth = 8;         // path: most surface hits a path has; whitted: ray levels (1 = ray casting)
-  bool shadows = true;   // whitted: shadow rays to the lights (off: the paper's Example 1)
+  // path: most surface hits a path has; whitted: ray levels (1 = ray casting). Whitted's 8 lets
+  // hollow glass through (five levels: four crossings of its walls and the ray beyond) with three
+  // to spare for glass seen in glass or in a mirror.
+  int depth = 8;
+  bool shadows = true;   // whitted: shadow rays to the lights (off: Baciu, Jia & Lam's Example 1)
   int rouletteAfter = 3;  // path: Russian roulette from this many hits on
+  // path: regularise glossy metal after the first diffuse or glossy bounce (Material::regularized).
+  // Biased (caustics and glossy inter-reflections come out blurred); off for reference renders.
+  bool regularize = true;
+  // whitted: shadow rays pass straight through glass, dimmed by each crossing's Fresnel
+  // transmission and tint (POV-Ray's filtered shadows), instead of being blocked by it.
+  bool filteredShadows = false;
 };
 
 class Integrator {
@@ -41,9 +50,13 @@ class Integrator {
  private:
   Color path(Ray ray, RandomStream& random, RayCounts& counts) const;
   Color whitted(const Ray& ray, int level, RandomStream& random, RayCounts& counts) const;
-  // Light arriving from every light at a hit, times f cos: next-event estimation.
+  // Light arriving from every light at a hit, times f cos: next-event estimation. With `mis`, a
+  // light that BSDF sampling can also reach (a sun with a cone) is weighted by the power heuristic.
   Color direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,
-               bool shadowRays, RandomStream& random, RayCounts& counts) const;
+               bool shadowRays, bool mis, RandomStream& random, RayCounts& counts) const;
+  // The fraction of a light sample's light that reaches `from`: 0 or 1 by a shadow ray, or with
+  // filtered shadows the product of the glass surfaces' filters along the straight line.
+  Color visibility(const scene::WorldHit& from, const LightSample& light, RayCounts& counts) const;
 
   const scene::EmbreeScene& scene_;
   const std::vector<Material>& materials_;

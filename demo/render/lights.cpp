@@ -19,14 +19,18 @@ Lights::Lights(const std::vector<io::SceneLight>& lights, const io::SceneEnviron
       zenith_(toColor(environment.zenith)),
       horizon_(toColor(environment.horizon)) {
   for (const io::SceneLight& light : lights) {
-    Light l{light.type, {}, {}, {}, 1};
+    Light l{light.type, {}, {}, {}, 1, 0, 0};
     if (light.type == io::LightType::point) {
       l.position = toVec3(light.position);
       l.power = toColor(light.intensity);
     } else {
       l.towardsSun = -toVec3(light.direction);
       l.power = toColor(light.irradiance);
-      l.cosHalfAngle = float(std::cos(light.angleDegrees * std::numbers::pi / 360.0));
+      // 1 - cos(h) = 2 sin^2(h / 2): in float, 1 - cos of a 0.5 degree half angle would keep 3 digits.
+      const double half = light.angleDegrees * std::numbers::pi / 360.0, s = std::sin(half / 2);
+      l.oneMinusCos = float(2 * s * s);
+      l.cosHalfAngle = 1 - l.oneMinusCos;
+      l.solidAngle = float(2 * std::numbers::pi * 2 * s * s);
     }
     lights_.push_back(l);
   }
@@ -45,18 +49,25 @@ LightSample Lights::sample(std::size_t index, Vec3 point, RandomStream& random) 
   }
   s.atInfinity = true;
   s.irradiance = light.power;
-  const float u1 = random.next(), u2 = random.next();
-  if (light.cosHalfAngle >= 1) {
+  const auto [u1, u2] = random.next2D();
+  if (light.solidAngle <= 0) {
     s.wi = light.towardsSun;
     return s;
   }
-  // Uniform over the cone's solid angle; the irradiance E is spread evenly over it (E = L Omega for
-  // the small cones a sun has), so each direction carries E.
-  const float cosTheta = 1 - u1 * (1 - light.cosHalfAngle);
+  // Uniform over the cone's solid angle Omega, radiance L = E / Omega in it: each sample carries
+  // L / pdf = E. (E is the sun's irradiance on a surface facing it, for the small cones a sun has.)
+  s.pdf = 1 / light.solidAngle;
+  const float cosTheta = 1 - u1 * light.oneMinusCos;
   const float sinTheta = std::sqrt(std::max(0.0f, 1 - cosTheta * cosTheta));
   const float phi = 2 * std::numbers::pi_v<float> * u2;
   s.wi = Frame(light.towardsSun).toWorld({sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta});
   return s;
+}
+
+LightSeen Lights::seen(std::size_t index, Vec3 d) const {
+  const Light& light = lights_[index];
+  if (light.type != io::LightType::sun || light.solidAngle <= 0 || dot(d, light.towardsSun) < light.cosHalfAngle) return {};
+  return {(1 / light.solidAngle) * light.power, 1 / light.solidAngle};
 }
 
 Color Lights::environment(Vec3 d) const {

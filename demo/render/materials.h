@@ -21,6 +21,7 @@ struct ScatterSample {
   Vec3 wi{};
   Color weight;           // f cos(theta_i) / pdf: the factor the path's throughput takes
   bool specular = false;  // a delta lobe: lights cannot be sampled for it
+  float pdf = 0;          // solid-angle density of wi (pdf() of it); 0 for a delta lobe
 };
 
 class Material {
@@ -33,6 +34,9 @@ class Material {
   // f(wo, wi) cos(theta_i) of the non-delta lobe; black for mirror and glass, and for wi below the
   // geometric surface.
   Color evaluate(Vec3 wo, Vec3 wi, Vec3 shading, Vec3 geometric) const;
+  // The solid-angle density with which sample() draws wi (0 for the delta lobes of mirror, glass
+  // and smooth metal): what multiple importance sampling weighs light samples against.
+  float pdf(Vec3 wo, Vec3 wi, Vec3 shading) const;
   // Draws wi from the material. Nothing when the sample is absorbed or points into the surface.
   // Glass: `outside` says whether wo lies on the side the surface's own normal points to.
   std::optional<ScatterSample> sample(Vec3 wo, Vec3 shading, Vec3 geometric, bool outside, RandomStream& random) const;
@@ -45,6 +49,14 @@ class Material {
     std::optional<Vec3> refracted;  // none under total internal reflection
   };
   Split glassSplit(Vec3 wo, Vec3 shading, bool outside) const;
+  // Glass: the tint times the Fresnel transmission (from outside) at this cosine, for light that
+  // crosses the surface on a straight line (filtered shadows); black for the other kinds.
+  Color straightTransmittance(float cosine) const;
+  // Path regularisation (as pbrt-v4's BSDF::Regularize): a glossy metal narrower than alpha = 0.3
+  // widened to 0.3. Applied after a path's first diffuse or glossy bounce, where a narrow lobe lit
+  // by a small light is found only by chance and makes fireflies. Other kinds are unchanged: delta
+  // lobes (mirror, glass, smooth metal) stay delta.
+  Material regularized() const;
   Color tint() const { return tint_; }
   Color color() const { return color_; }
 

@@ -1,8 +1,10 @@
-// revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
-// ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated, or
-// as Embree's own linear cone curve, for comparison). Options and the scene format are documented in README.md.
+// revolve-render: renders a scene file (io/scene_file.h) with path tracing or the Whitted ray tracer
+// of Baciu, Jia & Lam (2001), every surface of revolution traced exactly by revolve inside Embree
+// (or tessellated, or as Embree's own linear cone curve, for comparison). Options and the scene
+// format are documented in README.md.
 #include "common/command_line.h"
 #include "common/memory_check.h"
+#include "glass_checks.h"
 #include "image_output.h"
 #include "io/output_set.h"
 #include "io/scene_file.h"
@@ -16,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -28,11 +31,12 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
-  bool noMonotoneSplit = false, noRangeSearch = false, noShadows = false;
+  bool noMonotoneSplit = false, noRangeSearch = false, noShadows = false, noRegularize = false, filteredShadows = false;
+  double exposure = 0;
 };
 
 scene::BuildSettings buildSettings(const Options& options) {
@@ -59,7 +63,11 @@ void writeStats(io::OutputSet& outputs, const Options& options, const render::Re
   json["spp"] = settings.spp;
   json["integrator"] = options.integrator;
   json["depth"] = settings.integrator.depth;
+  if (settings.integrator.kind == render::IntegratorKind::path) json["regularize"] = settings.integrator.regularize;
+  else json["filtered_shadows"] = settings.integrator.filteredShadows;
   json["seed"] = settings.seed;
+  json["filter"] = options.filter;
+  json["exposure"] = options.exposure;
   json["threads"] = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
   json["geometry"] = options.geometry;
   json["objects"] = objects;
@@ -102,7 +110,7 @@ std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
   return {xy[0], xy[1]};
 }
 
-// Prints the object under the pixel (seed 001's scene editor): index, name, hit point, distance.
+// Prints the object under the pixel (as the GLBot simulator's scene editor): index, name, hit point, distance.
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
   const scene::EmbreeScene built(description, buildSettings(options));
@@ -129,6 +137,9 @@ io::SceneDescription readScene(const Options& options) {
 
 void run(const Options& options) {
   if (!options.pick.empty()) {
+    // Picking prints what lies under a pixel and renders nothing: an output would stay unwritten.
+    if (!options.output.empty()) throw std::runtime_error("-o " + options.output + ": --pick renders no image; leave -o out");
+    if (!options.stats.empty()) throw std::runtime_error("--stats " + options.stats + ": --pick renders nothing to report; leave --stats out");
     const io::SceneDescription description = readScene(options);
     const int width = options.width > 0 ? options.width : description.camera.width.value_or(640);
     const int height = options.height > 0 ? options.height : description.camera.height.value_or(480);
@@ -139,6 +150,9 @@ void run(const Options& options) {
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
   render::imageFormatFor(output);  // an unknown extension fails before any work
   const io::SceneDescription description = readScene(options);
+  for (const std::string& warning : render::glassWarnings(description)) {
+    std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  }
   // Every output is named now (its temporary made: the folder takes files), and none may be an input.
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
@@ -151,10 +165,13 @@ void run(const Options& options) {
   settings.height = options.height > 0 ? options.height : description.camera.height.value_or(480);
   settings.spp = options.spp > 0 ? options.spp : description.camera.spp.value_or(16);
   settings.seed = options.seed;
+  settings.filter = options.filter == "box" ? render::PixelFilter::box : render::PixelFilter::tent;
   settings.threads = options.threads;
   settings.integrator.kind = options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
-  settings.integrator.depth = options.depth > 0 ? options.depth : (options.integrator == "whitted" ? 4 : 8);
+  settings.integrator.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
   settings.integrator.shadows = !options.noShadows;
+  settings.integrator.regularize = !options.noRegularize;
+  settings.integrator.filteredShadows = options.filteredShadows;
 
   // The float image, OpenImageIO's copy of it and the converted one: 3 x 12 bytes a pixel.
   app::requireMemory(36.0 * settings.width * settings.height,
@@ -169,7 +186,10 @@ void run(const Options& options) {
     std::fprintf(stderr, "revolve-render: warning: %s: %llu rays fell outside Embree's range and were not traced\n", options.scene.c_str(),
                  static_cast<unsigned long long>(built.refusedRays()));
   }
-  render::writeImage(outputs.temporary(output), output, result.image);
+  render::Image image = result.image;
+  const float scale = float(std::exp2(options.exposure));
+  for (float& value : image.pixels) value *= scale;
+  render::writeImage(outputs.temporary(output), output, image);
   if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size());
   outputs.commit();
 }
@@ -187,12 +207,24 @@ int main(int argc, char** argv) {
       ->check(app::wholeNumberIn(1, 16384));
   app.add_option("--height", options.height, "image height in pixels (default: camera.height, else 480)")->check(app::wholeNumberIn(1, 16384));
   app.add_option("--spp", options.spp, "samples per pixel (default: camera.spp, else 16)")->check(app::wholeNumberIn(1, 1 << 20));
-  app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the paper's ray tracer")
+  app.add_option("--integrator", options.integrator, "path: path tracing; whitted: the ray tracer of Baciu, Jia & Lam (2001)")
       ->check(CLI::IsMember({"path", "whitted"}))
       ->capture_default_str();
-  app.add_option("--depth", options.depth, "path: most surface hits a path has (default 8); whitted: ray levels, 1 = ray casting (default 4)")
+  app.add_option("--depth", options.depth,
+                 "path: most surface hits a path has; whitted: ray levels, 1 = ray casting (default 8 for both; hollow glass needs 5)")
       ->check(app::wholeNumberIn(1, 64));
-  app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, the paper's Example 1)");
+  app.add_flag("--no-shadows", options.noShadows, "whitted: no shadow rays (with --depth 1, Baciu, Jia & Lam's Example 1)");
+  app.add_flag("--filtered-shadows", options.filteredShadows,
+               "whitted: shadow rays pass straight through glass, dimmed by its Fresnel transmission and tint (as POV-Ray's)");
+  app.add_flag("--no-regularize", options.noRegularize,
+               "path: no path regularisation (unbiased: for reference renders; the default roughens glossy metal after the first "
+               "diffuse or glossy bounce, which removes the fireflies of caustics)");
+  app.add_option("--filter", options.filter,
+                 "pixel filter of more than one sample a pixel: tent (radius 1 pixel) or box (the pixel's square)")
+      ->check(CLI::IsMember({"tent", "box"}))
+      ->capture_default_str();
+  app.add_option("--exposure", options.exposure, "scale the image by 2^EV before writing it (default 0)")
+      ->check(CLI::Range(-64.0, 64.0));
   app.add_option("--geometry", options.geometry,
                  "how surfaces of revolution are traced (mesh: tessellated with --slices; embree-cone: Embree's own "
                  "linear cone curve, for the profiles it can express)")
@@ -214,7 +246,7 @@ int main(int argc, char** argv) {
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory")->check(app::kNonEmpty);
   app.add_option("--pick", options.pick,
                  "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
-                 "its index, name, hit point and distance, or \"nothing\"")
+                 "its index, name, hit point and distance, or \"nothing\" (no -o or --stats with it)")
       ->check(CLI::Validator([](std::string& value) { return value.empty() ? std::string("the value is empty; expected X,Y") : std::string(); },
                              "X,Y"));
   if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-render")) return *status;

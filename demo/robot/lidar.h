@@ -1,4 +1,4 @@
-// A simulated laser range-finder (seed 001's GLBot laser): every beam of a sensor (io::SensorDescription)
+// A simulated laser range-finder (the GLBot simulator's laser): every beam of a sensor (io::SensorDescription)
 // traced from every robot pose into a scene built in Embree, the first hit taken as the return, with
 // ROS LaserScan semantics: a beam with no hit, or whose measured range lies outside [min, max], is
 // no return (+inf), never clamped; Gaussian noise (from the seed, per beam) is added to returns

@@ -1,6 +1,6 @@
 #include "robot/picking.h"
 
-#include "render/camera.h"
+#include "scene/camera.h"
 
 namespace revolve::robot {
 
@@ -11,7 +11,7 @@ std::string objectName(const io::SceneDescription& description, std::size_t obje
 
 std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width, int height,
                          int x, int y) {
-  const render::Camera camera(description.camera, width, height);
+  const scene::Camera camera(description.camera, width, height);
   const Ray ray = camera.ray(float(x) + 0.5f, float(y) + 0.5f);  // the pixel's centre
   const std::optional<scene::WorldHit> hit = scene.intersect(ray);
   if (!hit) return std::nullopt;

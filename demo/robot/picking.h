@@ -1,4 +1,4 @@
-// Picking (seed 001's scene editor): the object under a pixel of the scene camera's view, found by
+// Picking (as the GLBot simulator's scene editor picks): the object under a pixel of the scene camera's view, found by
 // one ray through the pixel's centre, the first object it hits.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The robot of seed 001's collision test: a solid vertical cylinder with flat ends, placed in the
+// The robot of the GLBot simulator's collision test: a solid vertical cylinder with flat ends, placed in the
 // world, and its signed distance function, in terms of which every clearance here is defined:
 // the clearance to an obstacle is the least signed distance over the obstacle's surface points
 // (positive: the gap; zero or negative: the surface touches or enters the robot, and minus the

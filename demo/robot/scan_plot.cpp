@@ -186,6 +186,7 @@ struct ScanPlot::Data {
   std::FILE* out = nullptr;
   std::int64_t pose = -1;      // the pose whose returns are being written
   bool firstReturn = true;
+  std::optional<std::size_t> ring;  // only this ring's returns
 
   Data(const io::SensorDescription& s, std::span<const io::RobotPose> p, const io::ScanLayout& l) : sensor(s), poses(p), layout(l) {}
   ~Data() {
@@ -208,14 +209,17 @@ struct ScanPlot::Data {
 };
 
 ScanPlot::ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor, std::span<const io::RobotPose> poses,
-                   const io::ScanLayout& layout)
+                   const io::ScanLayout& layout, std::optional<std::size_t> ring)
     : data_(std::make_unique<Data>(sensor, poses, layout)) {
+  data_->ring = ring;
   data_->out = std::fopen(data_->file.path().c_str(), "w");
   if (data_->out == nullptr) throw std::runtime_error(data_->file.path() + ": cannot write the plot's data: " + std::strerror(errno));
   const double sensorHeight = poses.empty() ? 0.0 : sensorFrame(sensor.pose, poses.front()).origin[2];
   nlohmann::json header = footprintOf(scene, sensorHeight);
   std::ostringstream title;
-  title << scene.file << ": " << layout.rings() << " x " << layout.azimuths.size() << " beams from " << layout.poses
+  title << scene.file << ": ";
+  if (ring) title << "ring " << *ring << " of ";
+  title << layout.rings() << " x " << layout.azimuths.size() << " beams from " << layout.poses
         << (layout.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
   header["title"] = title.str();
   std::string text = header.dump();
@@ -234,7 +238,7 @@ void ScanPlot::add(std::uint64_t first, std::span<const io::BeamReturn> beams) {
     const std::uint64_t pose = (first + i) / perPose;
     while (d.pose < std::int64_t(pose)) d.startPose(std::size_t(d.pose + 1));
     const io::BeamReturn& b = beams[i];
-    if (std::isinf(b.range)) continue;
+    if (std::isinf(b.range) || (d.ring && (first + i) % perPose / d.layout.azimuths.size() != *d.ring)) continue;
     std::fprintf(d.out, d.firstReturn ? "[%.9g, %.9g]" : ", [%.9g, %.9g]", b.x, b.y);
     d.firstReturn = false;
   }

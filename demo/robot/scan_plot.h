@@ -1,10 +1,12 @@
 // revolve-lidar's --plot: a top-down PNG of a scan over the scene's footprint. Floors and other
 // non-vertical quads are filled (higher ones on top), walls drawn as thick lines, each object of
 // revolution as its outline seen from above with, for upright ones, its section at the first
-// pose's sensor height (what a 2-D scanner at that height sees); then every return's beam, the
-// returns, and each pose's sensor with its heading; axes in the scene's units (metres). This file
-// projects the scene; matplotlib draws it (demo/lidar/revolve_lidar_plot.py, run as a child process,
-// terminated if this process is interrupted).
+// pose's sensor height (what a 2-D scanner at that height sees); then the returns' beams (at most
+// 2,000 of them: every k-th when there are more, as the title says), the returns, and each pose's
+// sensor with its heading; axes in the scene's units (metres). A 3-D scan can be plotted whole or
+// one ring at a time. This file projects the scene; matplotlib draws it
+// (demo/lidar/revolve_lidar_plot.py, run as a child process, terminated if this process is
+// interrupted).
 #pragma once
 
 #include "io/poses_file.h"
@@ -13,9 +15,10 @@
 #include "io/sensor_file.h"
 
 #include "io/output_set.h"
-
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -30,9 +33,10 @@ void checkPlotPath(const std::string& path);
 // finish() runs the plotter on it.
 class ScanPlot {
  public:
-  // Keeps references to all four: they must outlive it.
+  // Keeps references to all four: they must outlive it. With `ring`, only that ring's returns (0 =
+  // the lowest) are plotted.
   ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor, std::span<const io::RobotPose> poses,
-           const io::ScanLayout& layout);
+           const io::ScanLayout& layout, std::optional<std::size_t> ring = std::nullopt);
   ~ScanPlot();
   ScanPlot(const ScanPlot&) = delete;
   ScanPlot& operator=(const ScanPlot&) = delete;

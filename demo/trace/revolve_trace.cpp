@@ -1,7 +1,8 @@
 // revolve-trace: the nearest hit of each ray of a file with a surface of revolution, traced through
-// Embree (rtcIntersect1 on a scene holding the shape), written as CSV. An interface other tools
+// Embree (rtcIntersect1 on a scene holding the shape), written as CSV, and a summary line on stdout. An interface other tools
 // depend on: its options and file formats are documented in README.md and kept exact.
 #include "common/command_line.h"
+#include "common/counted.h"
 #include "common/embree_handles.h"
 #include "common/embree_rays.h"
 #include "common/memory_check.h"
@@ -11,9 +12,11 @@
 #include <revolve/revolve.h>
 
 #include <CLI/CLI.hpp>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -133,9 +136,18 @@ void run(const Options& options) {
   }
   rtcCommitScene(scene.get());
   if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error(options.profile + ": Embree failed to build the scene");
+  const auto start = std::chrono::steady_clock::now();
   const std::vector<std::optional<Hit>> hits = traceAll(scene.get(), rays, profile, mesh, options.slices);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   io::writeHitsCsv(outputs.stream(options.out), hits);
   outputs.commit();
+  const std::size_t hitCount = std::size_t(std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
+  const std::string method = mesh ? "mesh, " + std::to_string(options.slices) + " slices" : options.method;
+  std::printf("revolve-trace: %s, %s; %s (%s) traced in %.3g s (%.3g Mrays/s, %s); wrote %s\n",
+              app::counted(rays.size(), "ray").c_str(), app::counted(hitCount, "hit").c_str(),
+              app::counted(profile.points().size(), "profile point").c_str(), method.c_str(), seconds,
+              seconds > 0 ? double(rays.size()) / seconds * 1e-6 : 0.0,
+              app::counted(std::size_t(tbb::info::default_concurrency()), "thread").c_str(), options.out.c_str());
 }
 
 }  // namespace

@@ -292,6 +292,9 @@ TEST_F(TraceCliTest, SlicesSetTheMeshResolution) {
     const Result result = runTrace({"--profile", profilePath(), "--rays", raysPath(), "--out", outPath(), "--method",
                                     "mesh", "--slices", std::to_string(slices)});
     ASSERT_EQ(result.status, 0) << result.err;
+    // The summary line: counts, the profile and the method.
+    EXPECT_THAT(result.out, ::testing::StartsWith("revolve-trace: 1 ray, 1 hit; "));
+    EXPECT_THAT(result.out, ::testing::HasSubstr("(mesh, " + std::to_string(slices) + " slices)"));
     const std::vector<HitLine> hits = readHits(outPath());
     ASSERT_EQ(hits.size(), 1u);
     ASSERT_TRUE(hits[0].hit);

@@ -1,13 +1,16 @@
 // The integrators against answers that follow from the physics, not from this code:
 // - white furnace: a convex diffuse object of albedo a under a uniform environment L shows a L on
-//   every pixel it covers (one bounce, then the ray escapes: no variance at all), L elsewhere;
+//   every pixel it covers (one bounce, then the ray escapes: no variance at all), L elsewhere. The
+//   object is flat-shaded (crease 0): a smooth shading normal tilts from the geometric one, and a
+//   sampled direction between the two horizons is dropped (it would leak through the surface), a
+//   loss of order sin^2 of the tilt that an exact comparison cannot allow;
 // - a concave one (a cup, albedo 1) still shows L, within the Monte Carlo error measured from the
 //   pixels themselves;
 // - glass of index 1 is invisible;
 // - Whitted's diffuse shading of a (polyline) sphere under one point light is a I cos / (pi d^2).
 #include "render_support.h"
 
-#include "camera.h"
+#include "scene/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +34,7 @@ std::string furnaceScene(const std::string& profile, double albedo, double envir
                          const std::string& from = "[0, -5, 1.2]") {
   const std::string a = number(albedo), l = number(environment);
   return R"({"camera": {"from": )" + from + R"(, "to": [0, 0, 0.3], "up": [0, 0, 1], "fov": 40},
-            "profiles": {"shape": {"points": )" + profile + R"(},
+            "profiles": {"shape": {"points": )" + profile + R"(, "crease": 0},
                          "glass_block": {"points": [[0, -1.5], [0.8, -1.5], [0.8, 2], [0, 2]]}},
             "materials": {"m": {"type": "diffuse", "color": [)" + a + "," + a + "," + a + R"(]},
                           "clear": {"type": "glass", "ior": 1}},
@@ -126,7 +129,7 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
   render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted, 1);
   settings.width = settings.height = 40;
   const testing::RenderRun run = renderText(scene, settings);
-  const render::Camera camera(run.description.camera, settings.width, settings.height);
+  const scene::Camera camera(run.description.camera, settings.width, settings.height);
   int checked = 0;
   for (int y = 0; y < settings.height; ++y) {
     for (int x = 0; x < settings.width; ++x) {
@@ -152,6 +155,50 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
     }
   }
   EXPECT_GT(checked, 300);
+}
+
+// A hollow tube of index-1 glass (no reflection, rays straight through) under a uniform sky: the
+// ray through the image's centre crosses four walls, so Whitted shows the sky from five levels on
+// (the default, 8, included) and black below.
+TEST(IntegratorClosedFormsTest, WhittedSeesThroughHollowGlassFromFiveLevels) {
+  const std::string scene = R"({"camera": {"from": [0, -6, 0], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 20},
+      "profiles": {"tube": {"points": [[0.9, -1], [1, -1], [1, 1], [0.9, 1], [0.9, -1]]}},
+      "materials": {"clear": {"type": "glass", "ior": 1}},
+      "objects": [{"profile": "tube", "material": "clear"}],
+      "environment": {"color": [0.7, 0.7, 0.7]}})";
+  for (const int depth : {0, 4, 5}) {
+    render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted);
+    settings.width = 9, settings.height = 7;  // the centre pixel's ray is the camera's axis
+    if (depth > 0) settings.integrator.depth = depth;
+    const testing::RenderRun run = renderText(scene, settings);
+    EXPECT_EQ(run.result.image.at(4, 3).g, depth == 4 ? 0.0f : 0.7f) << "depth " << (depth > 0 ? depth : settings.integrator.depth);
+  }
+}
+
+// Filtered shadows: a point light above a glass disc over a diffuse floor. Straight down, the
+// shadow ray crosses the disc's two faces at normal incidence, each passing 1 - F = 1 - ((n - 1) /
+// (n + 1))^2 of the light times the tint; the floor under it shows a I / (pi d^2) times that.
+// Without filtering, the disc's shadow is black.
+TEST(IntegratorClosedFormsTest, WhittedFilteredShadowsPassFresnelTransmissionAndTint) {
+  const double albedo = 0.5, intensity = 40, height = 10, ior = 1.5, tint = 0.8;
+  const std::string scene = R"({"camera": {"from": [6, 0, 1], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 10},
+      "profiles": {"disc": {"points": [[0, 4], [2, 4], [2, 5], [0, 5]]}},
+      "materials": {"floor": {"type": "diffuse", "color": [0.5, 0.5, 0.5]},
+                    "glass": {"type": "glass", "ior": 1.5, "tint": [0.8, 0.8, 0.8]}},
+      "objects": [{"profile": "disc", "material": "glass"}],
+      "quads": [{"corners": [[-50, -50, 0], [50, -50, 0], [50, 50, 0], [-50, 50, 0]], "material": "floor"}],
+      "lights": [{"type": "point", "position": [0, 0, 10], "intensity": [40, 40, 40]}]})";
+  const double f = (ior - 1) / (ior + 1) * (ior - 1) / (ior + 1);
+  const double unshadowed = albedo / 3.14159265358979323846 * intensity / (height * height);
+  for (const bool filtered : {false, true}) {
+    render::RenderSettings settings = smallSettings(1, render::IntegratorKind::whitted);
+    settings.width = 9, settings.height = 7;
+    settings.integrator.filteredShadows = filtered;
+    const testing::RenderRun run = renderText(scene, settings);
+    const double expected = filtered ? unshadowed * (1 - f) * tint * (1 - f) * tint : 0.0;
+    // The centre ray meets the floor within a float rounding of the origin: cos and d are 1 and 10.
+    EXPECT_NEAR(run.result.image.at(4, 3).g, expected, 1e-5 * unshadowed) << (filtered ? "filtered" : "opaque");
+  }
 }
 
 }  // namespace

@@ -79,7 +79,7 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   const testing::ProcessResult run = runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses",
                                                                      dir / "poses.csv", "-o", dir / "scan.csv", "--plot", dir / "scan.png"});
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams"));
+  EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams (1 ring x 3 azimuths)"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
   ASSERT_EQ(rows.size(), 10u);
   EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object");
@@ -163,6 +163,8 @@ std::vector<BadRun> badLidarRuns() {
   threadsZero.insert(threadsZero.end(), {"--threads", "0"});
   std::vector<std::string> txt = kLidarArgs;
   txt.back() = "{dir}/scan.txt";
+  std::vector<std::string> plotRing = kLidarArgs;
+  plotRing.insert(plotRing.end(), {"--plot", "{dir}/scan.png", "--plot-ring", "1"});
   return {
       {"SensorDegrees", kLidarArgs, "sensor.json: horizontal.max_angle: 90 is out of range: angles are in radians", kScene,
        replaced(kSensor, R"("max_angle": 1.5707963267948966)", R"("max_angle": 90)")},
@@ -172,6 +174,7 @@ std::vector<BadRun> badLidarRuns() {
       {"OutputFolderMissing", pcdElsewhere, "no/such/folder/scan.pcd: cannot create a file there"},
       {"PlotExtension", plotJpg, R"(scan.jpg: unsupported plot extension ".jpg")"},
       {"ThreadsZero", threadsZero, "--threads: 0 is out of range: it must lie in [1, 1024] (see --help)"},
+      {"PlotRingBeyondTheSensors", plotRing, "sensor.json has 1 ring, numbered from 0"},
   };
 }
 
@@ -195,7 +198,7 @@ TEST(RevolveClearanceCliTest, WritesTheClosedFormClearancePerPose) {
   const testing::ProcessResult run = runProcess(REVOLVE_CLEARANCE_PATH, {dir / "scene.json", "--robot", "0.3,0.05,1.2", "--poses",
                                                                          dir / "poses.csv", "-o", dir / "clearance.csv"});
   ASSERT_EQ(run.status, 0) << run.err;
-  EXPECT_THAT(run.out, HasSubstr("3 poses, 1 collide"));
+  EXPECT_THAT(run.out, HasSubstr("3 poses, 1 collides"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "clearance.csv"));
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0], "pose,clearance,collides,object,px,py,pz");

@@ -1,4 +1,5 @@
-// A pinhole camera from the scene's from / to / up / vertical field of view.
+// A pinhole camera from the scene's from / to / up / vertical field of view: the renderer's camera rays
+// and picking's ray through a pixel are the same rays.
 #pragma once
 
 #include "common/unit_vector.h"
@@ -9,7 +10,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace revolve::render {
+namespace revolve::scene {
 
 class Camera {
  public:
@@ -56,4 +57,4 @@ class Camera {
   Vec3 origin_{}, forward_{}, right_{}, up_{};
 };
 
-}  // namespace revolve::render
+}  // namespace revolve::scene
