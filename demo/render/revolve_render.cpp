@@ -2,6 +2,7 @@
 // ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
 // for comparison). Options and the scene format are documented in README.md.
 #include "image_output.h"
+#include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "io/text_files.h"
 #include "progress.h"
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -25,7 +27,7 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick, exportPov;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -111,6 +113,23 @@ void pickObject(const Options& options, const io::SceneDescription& description,
               picked->point.y, picked->point.z, picked->distance);
 }
 
+// --export-pov: the scene as POV-Ray SDL (io/pov_scene.h), with whitted's depth and shadows as the
+// file's defaults. What maps only approximately is reported as a warning.
+void exportPov(const Options& options, const io::SceneDescription& description) {
+  io::PovDefaults defaults;
+  defaults.depth = options.depth > 0 ? options.depth : 4;
+  defaults.shadows = !options.noShadows;
+  for (const std::string& warning : io::writePovScene(options.exportPov, description, defaults)) {
+    std::fprintf(stderr, "revolve-render: warning: %s: %s\n", options.exportPov.c_str(), warning.c_str());
+  }
+}
+
+void checkPovName(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".pov") throw std::runtime_error(path + ": --export-pov writes POV-Ray scene files, named .pov");
+}
+
 void run(const Options& options) {
   if (!options.pick.empty()) {
     const io::SceneDescription description = io::readScene(options.scene);
@@ -119,15 +138,24 @@ void run(const Options& options) {
     pickObject(options, description, width, height);
     return;
   }
+  // With --export-pov and no -o, only the SDL is written.
+  const bool renders = options.exportPov.empty() || !options.output.empty();
   const std::string output =
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
-  render::imageFormatFor(output);  // an unknown extension fails before any work
+  if (!options.exportPov.empty()) checkPovName(options.exportPov);
+  if (!renders && !options.stats.empty()) {
+    throw std::runtime_error("--stats: --export-pov without -o renders nothing to report; add -o to render as well");
+  }
+  if (renders) render::imageFormatFor(output);  // an unknown extension fails before any work
   const io::SceneDescription description = io::readScene(options.scene);
   for (const io::SceneProfile& profile : description.profiles) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
   }
-  render::checkWritable(output);
-  if (!options.stats.empty()) render::checkWritable(options.stats);
+  if (!options.exportPov.empty()) io::checkWritable(options.exportPov);
+  if (renders) render::checkWritable(output);
+  if (renders && !options.stats.empty()) render::checkWritable(options.stats);
+  if (!options.exportPov.empty()) exportPov(options, description);
+  if (!renders) return;
 
   render::RenderSettings settings;
   settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
@@ -176,9 +204,13 @@ int main(int argc, char** argv) {
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")->capture_default_str();
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
+  CLI::Option* exportOption =
+      app.add_option("--export-pov", options.exportPov,
+                     "write the scene as POV-Ray SDL (FILE.pov; size from POV-Ray's +W +H) and render only if -o is given");
   app.add_option("--pick", options.pick,
                  "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
-                 "its index, name, hit point and distance, or \"nothing\"");
+                 "its index, name, hit point and distance, or \"nothing\"")
+      ->excludes(exportOption);
   CLI11_PARSE(app, argc, argv);
   try {
     run(options);
