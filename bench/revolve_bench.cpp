@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   try {
     if (newSuite && !jsonPath.empty()) revolve::io::checkWritable(jsonPath);  // before minutes of work
     if (paperTable->parsed()) {
-      paper.repetitions = quickRepetitions ? (settings.quick ? 1 : 3) : settings.repetitions;
+      paper.repetitions = quickRepetitions ? (settings.quick ? 1 : 5) : settings.repetitions;
       if (settings.quick && paperTable->count("--size") == 0) paper.size = 24;
       const std::vector<PaperExample> examples = runPaperTable(paper);
       printPaperTable(stdout, paper, examples);
