@@ -4,7 +4,8 @@
 // pov: one scene exported to POV-Ray SDL (io/pov_scene.h) and rendered by both at the same size,
 // one sample a pixel, the same reflection depth, point lights only, on one thread and on all;
 // revolve's render time (in process, whitted) against POV-Ray's Trace Time statistic (its
-// rendering alone, not its start-up, parsing or bounding), medians of interleaved repetitions; the
+// rendering alone, not its start-up, parsing or bounding), medians of interleaved repetitions
+// (revolve's rendered several times a repetition, its renders being so much shorter); the
 // images compared after matching exposure and written side by side.
 //
 // pov-scaling: one lathe (the benchmark's vase) at 16 to 32,767 profile points, the same camera
@@ -28,7 +29,7 @@ struct PovCompareSettings {
   int depth = 4;
   bool shadows = true;
   int threads = 0;  // the "all threads" count; 0: the machine's
-  int repetitions = 3;
+  int repetitions = 5;
   std::string outDirectory = "out/pov";
   std::string figure;  // the side-by-side PNG; empty: <outDirectory>/<scene name>_side_by_side.png
 };
@@ -36,6 +37,7 @@ struct PovCompareSettings {
 struct TimedRun {
   int threads = 1;
   double revolveSeconds = 0, revolveLow = 0, revolveHigh = 0;  // median and range
+  int revolveRenders = 0;                                      // renders the median is of
   double povraySeconds = 0, povrayLow = 0, povrayHigh = 0;     // Trace Time
   double povrayParseSeconds = 0, povrayBoundingSeconds = 0;    // medians
   double ratio() const { return povraySeconds / revolveSeconds; }

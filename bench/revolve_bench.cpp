@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   try {
     if (newSuite && !jsonPath.empty()) revolve::io::checkWritable(jsonPath);  // before minutes of work
     if (paperTable->parsed()) {
-      paper.repetitions = quickRepetitions ? (settings.quick ? 1 : 5) : settings.repetitions;
+      paper.repetitions = quickRepetitions ? (settings.quick ? 1 : 11) : settings.repetitions;
       if (settings.quick && paperTable->count("--size") == 0) paper.size = 24;
       const std::vector<PaperExample> examples = runPaperTable(paper);
       printPaperTable(stdout, paper, examples);
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
       nlohmann::ordered_json document = runInfo(commandLine);
       if (povCompare->parsed()) {
         pov.shadows = !povNoShadows;
-        pov.repetitions = quickRepetitions ? (settings.quick ? 1 : 3) : settings.repetitions;
+        pov.repetitions = quickRepetitions ? (settings.quick ? 1 : 5) : settings.repetitions;
         const PovComparison comparison = runPovComparison(*povray, pov);
         printPovComparison(stdout, pov, comparison);
         document.update(povComparisonJson(pov, comparison));

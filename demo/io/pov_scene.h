@@ -1,7 +1,7 @@
 // A scene description (io/scene_file.h) written as POV-Ray 3.7 scene description language, so that
 // the same scene can be rendered by POV-Ray and compared with revolve (README, "Against POV-Ray").
 //
-// The mapping (README, "Exporting to POV-Ray" lists what does not map):
+// The mapping (README, "Against POV-Ray", lists what does not map):
 // - Axes: POV-Ray's y is revolve's z (up) and its z is revolve's y. The swap turns revolve's
 //   right-handed z-up world into POV-Ray's left-handed y-up one without mirroring the picture, and
 //   it makes each profile a POV-Ray `lathe` (revolved about its y) with the points (r, z) unchanged.
