@@ -98,7 +98,10 @@ int main(int argc, char** argv) {
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
 
-  const bool quickRepetitions = app.count("--repetitions") == 0;
+  // The new subcommands' own repetition defaults, unless --repetitions or --quick says otherwise.
+  const auto repetitionsFor = [&](int fallback) {
+    return app.count("--repetitions") > 0 ? settings.repetitions : settings.quick ? 1 : fallback;
+  };
   const bool newSuite = paperTable->parsed() || povCompare->parsed() || povScale->parsed();
   if (newSuite && (!csvPath.empty() || app.count("--rays") > 0 || !camera.empty() || app.count("--min-time") > 0)) {
     std::fprintf(stderr, "revolve-bench: --csv, --rays, --camera and --min-time belong to speed-error and scaling\n");
@@ -107,12 +110,13 @@ int main(int argc, char** argv) {
   try {
     if (newSuite && !jsonPath.empty()) revolve::io::checkWritable(jsonPath);  // before minutes of work
     if (paperTable->parsed()) {
-      paper.repetitions = quickRepetitions ? (settings.quick ? 1 : 11) : settings.repetitions;
+      paper.repetitions = repetitionsFor(paper.repetitions);
       if (settings.quick && paperTable->count("--size") == 0) paper.size = 24;
+      nlohmann::ordered_json document = runInfo(commandLine);
       const std::vector<PaperExample> examples = runPaperTable(paper);
+      finishRunInfo(document);
       printPaperTable(stdout, paper, examples);
       if (!jsonPath.empty()) {
-        nlohmann::ordered_json document = runInfo(commandLine);
         document["quick"] = settings.quick;
         document.update(paperTableJson(paper, examples));
         writeJsonFile(jsonPath, document);
@@ -130,16 +134,17 @@ int main(int argc, char** argv) {
       nlohmann::ordered_json document = runInfo(commandLine);
       if (povCompare->parsed()) {
         pov.shadows = !povNoShadows;
-        pov.repetitions = quickRepetitions ? (settings.quick ? 1 : 5) : settings.repetitions;
+        pov.repetitions = repetitionsFor(pov.repetitions);
         const PovComparison comparison = runPovComparison(*povray, pov);
         printPovComparison(stdout, pov, comparison);
         document.update(povComparisonJson(pov, comparison));
       } else {
-        povScaling.repetitions = quickRepetitions ? (settings.quick ? 1 : 3) : settings.repetitions;
+        povScaling.repetitions = repetitionsFor(povScaling.repetitions);
         const std::vector<PovScalingPoint> points = runPovScaling(*povray, povScaling);
         printPovScaling(stdout, povScaling, points);
         document.update(povScalingJson(povScaling, points));
       }
+      finishRunInfo(document);
       if (!jsonPath.empty()) writeJsonFile(jsonPath, document);
       return 0;
     }

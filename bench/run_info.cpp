@@ -26,14 +26,23 @@ std::string today() {
   return text;
 }
 
+double loadAverage() {
+  std::ifstream file("/proc/loadavg");
+  double load = -1;
+  file >> load;
+  return file ? load : -1;
+}
+
 nlohmann::ordered_json runInfo(const std::string& commandLine) {
   nlohmann::ordered_json info;
   info["command"] = commandLine;
   info["date"] = today();
-  info["machine"] = {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}};
+  info["machine"] = {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}, {"load_before", loadAverage()}};
   info["embree"] = RTC_VERSION_STRING;
   return info;
 }
+
+void finishRunInfo(nlohmann::ordered_json& info) { info["machine"]["load_after"] = loadAverage(); }
 
 void writeJsonFile(const std::string& path, const nlohmann::ordered_json& document) {
   const std::string text = document.dump(1) + "\n";
