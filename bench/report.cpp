@@ -1,6 +1,7 @@
 #include "report.h"
 
 #include "io/text_files.h"
+#include "run_info.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,21 +18,6 @@ namespace revolve::bench {
 namespace {
 
 using nlohmann::json;
-
-std::string cpuModel() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  }
-  return "unknown";
-}
-
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
-  return text;
-}
 
 std::string bytesText(double bytes) {
   char text[32];

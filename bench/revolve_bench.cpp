@@ -1,6 +1,6 @@
 // revolve-bench: speed against error, side by side, on the same rays.
 //
-//   revolve-bench [speed-error | scaling] [--quick] [--json FILE] [--csv FILE] [options]
+//   revolve-bench [speed-error | scaling | paper-table | pov | pov-scaling] [--quick] [--json FILE] [--csv FILE] [options]
 //
 // speed-error traces five smooth test shapes with MIBIT (each shell kind) at increasing profile
 // resolution, with Embree triangle meshes over a grid of profile points x slices, with the linear
@@ -9,8 +9,14 @@
 // floor of any user geometry's cost); it measures every method's error against the smooth surface
 // and its speed (Mrays/s, medians of interleaved repetitions), build time and memory, and matches
 // MIBIT against the best mesh and Embree's curves at each error level. scaling measures throughput
-// against the number of profile points, 16 to 32,768. With no subcommand both run.
+// against the number of profile points, 16 to 32,768. With no subcommand both run. paper-table
+// reproduces Baciu, Jia & Lam 2001's Tables 2 and 4 on the patio (paper_table.h); pov and
+// pov-scaling measure revolve beside POV-Ray 3.7 (pov_compare.h).
+#include "paper_table.h"
+#include "pov_compare.h"
+#include "povray.h"
 #include "report.h"
+#include "run_info.h"
 #include "suites.h"
 
 #include "../demo/common/command_line.h"
@@ -44,6 +50,37 @@ int main(int argc, char** argv) {
   speedError->add_option("--shapes", shapes, "only these shapes (sphere, torus, vase, goblet, bottle)")
       ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
   CLI::App* scaling = cli.add_subcommand("scaling", "throughput against profile points, 16 to 32,768, on the vase");
+
+  PaperTableSettings paper;
+  CLI::App* paperTable = cli.add_subcommand(
+      "paper-table", "Baciu, Jia & Lam 2001's Tables 2 and 4 on the patio: KJ and MIBIT's shells, monotone split and range search");
+  paperTable->add_option("--scene", paper.scene, "the scene")->check(app::kNonEmpty)->capture_default_str();
+  paperTable->add_option("--size", paper.size, "image width and height")->check(app::wholeNumberIn(1, 16384))->capture_default_str();
+  paperTable->add_option("--threads", paper.threads, "render threads")->check(app::wholeNumberIn(1, 1024))->capture_default_str();
+
+  PovCompareSettings pov;
+  CLI::App* povCompare = cli.add_subcommand("pov", "a scene rendered by revolve (whitted) and POV-Ray 3.7: trace times, image difference");
+  povCompare->add_option("--scene", pov.scene, "the scene (point lights, uniform environment, no metal)")
+      ->check(app::kNonEmpty)
+      ->capture_default_str();
+  povCompare->add_option("--width", pov.width, "image width (default: the scene's camera.width, else 640)")->check(app::wholeNumberIn(1, 16384));
+  povCompare->add_option("--height", pov.height, "image height (default: camera.height, else 480)")->check(app::wholeNumberIn(1, 16384));
+  povCompare->add_option("--depth", pov.depth, "ray levels (POV-Ray's max_trace_level)")->check(app::wholeNumberIn(1, 64))->capture_default_str();
+  bool povNoShadows = false;
+  povCompare->add_flag("--no-shadows", povNoShadows, "no shadow rays");
+  povCompare->add_option("--threads", pov.threads, "the all-threads count (default: the machine's); one thread is always run too")
+      ->check(app::wholeNumberIn(1, 1024));
+  povCompare->add_option("--out", pov.outDirectory, "folder for the SDL and both images")->check(app::kNonEmpty)->capture_default_str();
+  povCompare->add_option("--figure", pov.figure, "the side-by-side PNG (default: OUT/<scene>_side_by_side.png)")->check(app::kNonEmpty);
+
+  PovScalingSettings povScaling;
+  CLI::App* povScale = cli.add_subcommand("pov-scaling", "one lathe at 16 to 32,767 points: revolve's and POV-Ray's trace times");
+  povScale->add_option("--points", povScaling.points, "profile point counts (16 to 32767)")
+      ->delimiter(',')
+      ->check(app::wholeNumberIn(16, 32767));
+  povScale->add_option("--size", povScaling.size, "image width and height")->check(app::wholeNumberIn(1, 16384))->capture_default_str();
+  povScale->add_option("--threads", povScaling.threads, "threads of both (default: the machine's)")->check(app::wholeNumberIn(1, 1024));
+  povScale->add_option("--out", povScaling.outDirectory, "folder for the SDL and images")->check(app::kNonEmpty)->capture_default_str();
   cli.require_subcommand(0, 1);
   if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-bench")) return *status;
 
@@ -77,6 +114,57 @@ int main(int argc, char** argv) {
     if (!jsonPath.empty()) outputs.add("--json", jsonPath);
     if (!csvPath.empty()) outputs.add("--csv", csvPath);
 
+    // The POV-Ray and paper-table subcommands' own repetition defaults, unless --repetitions or
+    // --quick says otherwise.
+    const auto repetitionsFor = [&](int fallback) {
+      return cli.count("--repetitions") > 0 ? settings.repetitions : settings.quick ? 1 : fallback;
+    };
+    const bool renderSuite = paperTable->parsed() || povCompare->parsed() || povScale->parsed();
+    if (renderSuite && (!csvPath.empty() || cli.count("--rays") > 0 || !camera.empty() || cli.count("--min-time") > 0)) {
+      throw std::runtime_error("--csv, --rays, --camera and --min-time belong to speed-error and scaling");
+    }
+    const auto writeDocument = [&](const nlohmann::ordered_json& document) {
+      if (jsonPath.empty()) return;
+      outputs.stream(jsonPath).write(document.dump(2) + "\n");
+      outputs.commit();
+    };
+    if (paperTable->parsed()) {
+      paper.repetitions = repetitionsFor(paper.repetitions);
+      if (settings.quick && paperTable->count("--size") == 0) paper.size = 24;
+      nlohmann::ordered_json document = runInfo(commandLine);
+      const std::vector<PaperExample> examples = runPaperTable(paper);
+      finishRunInfo(document);
+      printPaperTable(stdout, paper, examples);
+      document["quick"] = settings.quick;
+      document.update(paperTableJson(paper, examples));
+      writeDocument(document);
+      return;
+    }
+    if (povCompare->parsed() || povScale->parsed()) {
+      // Documented commands, not CI steps: without POV-Ray there is nothing to compare.
+      const std::optional<std::string> povray = findPovray();
+      if (!povray) {
+        std::fprintf(stderr, "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, "
+                             "or scripts/install-deps.sh --test)\n");
+        return;
+      }
+      nlohmann::ordered_json document = runInfo(commandLine);
+      if (povCompare->parsed()) {
+        pov.shadows = !povNoShadows;
+        pov.repetitions = repetitionsFor(pov.repetitions);
+        const PovComparison comparison = runPovComparison(*povray, pov);
+        printPovComparison(stdout, pov, comparison);
+        document.update(povComparisonJson(pov, comparison));
+      } else {
+        povScaling.repetitions = repetitionsFor(povScaling.repetitions);
+        const std::vector<PovScalingPoint> points = runPovScaling(*povray, povScaling);
+        printPovScaling(stdout, povScaling, points);
+        document.update(povScalingJson(povScaling, points));
+      }
+      finishRunInfo(document);
+      writeDocument(document);
+      return;
+    }
     const revolve::app::Device device = revolve::app::newDevice();
     RunResults results;
     results.settings = settings;

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the bundled scenes: patio.json, still_life.json, many.json and profiles/*.csv.
+"""Writes the bundled scenes: patio.json, patio_points.json, still_life.json, vessels.json, many.json
+and profiles/*.csv.
 
 Run from anywhere: python3 scenes/make_scenes.py. The committed files are this script's output;
 edit the script, not them. Units are metres, z is up, angles in degrees (README, "Scene format").
@@ -169,14 +170,26 @@ def write_csv(name, points):
             f.write(f"{r},{z}\n")
 
 
-def dump(name, scene):
+def dump(name, scene, compact_points=False):
+    """Writes the scene; compact_points puts each profile's points on one line (long profiles)."""
     with open(os.path.join(HERE, name), "w") as f:
-        json.dump(scene, f, indent=1)
+        if not compact_points:
+            json.dump(scene, f, indent=1)
+        else:
+            inline = {}
+            for key, profile in scene["profiles"].items():
+                marker = f"@points:{key}@"
+                inline[json.dumps(marker)] = json.dumps(profile["points"], separators=(",", ":"))
+                profile["points"] = marker
+            text = json.dumps(scene, indent=1)
+            for marker, points in inline.items():
+                text = text.replace(marker, points)
+            f.write(text)
         f.write("\n")
 
 
 # ----------------------------------------------------------------------------------------------
-def patio():
+def patio(points_only=False):
     """The paper's Example scene: three round tables, six chairs, cups, bottles and bowls on the
     tables, and patio rails on forty round rail fixtures: one hundred surfaces of revolution.
     Each chair is four: a seat on its pedestal, two turned back posts and a turned top rail."""
@@ -291,18 +304,42 @@ def patio():
     quads.append({"corners": [[-12, 6.0, 1.6], [12, 6.0, 1.6], [12, 6.6, 1.6], [-12, 6.6, 1.6]], "material": "hedge"})
     quads.append({"corners": [[-6.5, -8, 0], [-6.5, 12, 0], [-6.5, 12, 4.5], [-6.5, -8, 4.5]], "material": "wall"})
 
-    dump("patio.json", {
-        "description": "The paper's outdoor restaurant patio (Baciu, Jia & Lam 2001, Figures 10 and 11): "
-                       "three round tables, six chairs, cups, bottles and bowls on the tables, patio rails on "
-                       "forty round rail fixtures; one hundred surfaces of revolution. Written by make_scenes.py.",
-        "camera": {"from": [0.1, -3.1, 1.6], "to": [0.1, 1.4, 0.6], "up": [0, 0, 1], "fov": 48,
-                   "width": 640, "height": 480, "spp": 64},
+    camera = {"from": [0.1, -3.1, 1.6], "to": [0.1, 1.4, 0.6], "up": [0, 0, 1], "fov": 48,
+              "width": 640, "height": 480, "spp": 64}
+    sun = [0.55, 0.65, -0.75]
+    if not points_only:
+        dump("patio.json", {
+            "description": "The paper's outdoor restaurant patio (Baciu, Jia & Lam 2001, Figures 10 and 11): "
+                           "three round tables, six chairs, cups, bottles and bowls on the tables, patio rails on "
+                           "forty round rail fixtures; one hundred surfaces of revolution. Written by make_scenes.py.",
+            "camera": camera,
+            "profiles": profiles,
+            "materials": materials,
+            "objects": objects,
+            "quads": quads,
+            "lights": [{"type": "sun", "direction": sun, "irradiance": [3.2, 3.0, 2.7], "angle": 1.0}],
+            "environment": {"sky": {"zenith": [0.22, 0.38, 0.75], "horizon": [0.75, 0.8, 0.88]}},
+        })
+        return
+    # What POV-Ray renders the same way (README, "Against POV-Ray"): the sun becomes a point light
+    # 40 m away along its direction (the same irradiance at the tables: I = E d^2), the sky a uniform
+    # environment, the rough metals a diffuse table finish and a mirror-steel bowl.
+    materials["table_metal"] = {"type": "diffuse", "color": [0.25, 0.3, 0.28]}
+    materials["steel"] = {"type": "mirror", "color": [0.8, 0.8, 0.82]}
+    d = 40.0
+    n = math.sqrt(sum(c * c for c in sun))
+    position = [r6(0.1 - sun[0] / n * d), r6(1.4 - sun[1] / n * d), r6(0.0 - sun[2] / n * d)]
+    dump("patio_points.json", {
+        "description": "The patio (patio.json) lit only by what POV-Ray renders the same way: a point light "
+                       "instead of the sun, a uniform environment instead of the sky, no rough metal. "
+                       "Written by make_scenes.py.",
+        "camera": camera,
         "profiles": profiles,
         "materials": materials,
         "objects": objects,
         "quads": quads,
-        "lights": [{"type": "sun", "direction": [0.55, 0.65, -0.75], "irradiance": [3.2, 3.0, 2.7], "angle": 1.0}],
-        "environment": {"sky": {"zenith": [0.22, 0.38, 0.75], "horizon": [0.75, 0.8, 0.88]}},
+        "lights": [{"type": "point", "position": position, "intensity": [r6(e * d * d) for e in (3.2, 3.0, 2.7)]}],
+        "environment": {"color": [0.4, 0.45, 0.55]},
     })
 
 
@@ -390,7 +427,58 @@ def many():
     })
 
 
+def turned_vessel(height, radius, waves, n):
+    """A hollow turned vessel of n outer points: radius(t), t in [0, 1] from foot to lip, times
+    `radius`, with a flared lip; the inside follows the outer wall."""
+    outer = [(radius * (0.7 + 0.25 * math.sin(math.pi * t * 1.15) + 0.035 * math.sin(2 * math.pi * waves * t)) *
+              (1 + 0.35 * max(0.0, (t - 0.85) / 0.15) ** 2), height * t)
+             for t in (i / n for i in range(n + 1))]
+    return hollow(outer, 0.0035 * radius / 0.06, 0.006)
+
+
+def vessels(n=1000):
+    """Fifteen turned vessels on a table, each profile of about 2n points (distinct profiles, so no
+    two objects share a lathe): the lathe-heavy scene of the comparison with POV-Ray."""
+    profiles, objects = {}, []
+    materials = {
+        "glaze_blue": {"type": "diffuse", "color": [0.15, 0.3, 0.6]},
+        "glaze_cream": {"type": "diffuse", "color": [0.85, 0.8, 0.68]},
+        "terracotta": {"type": "diffuse", "color": [0.62, 0.3, 0.18]},
+        "chrome": {"type": "mirror", "color": [0.85, 0.85, 0.87]},
+        "clear_glass": {"type": "glass", "ior": 1.5},
+        "table": {"type": "diffuse", "color": [0.4, 0.3, 0.22]},
+        "wall": {"type": "diffuse", "color": [0.7, 0.68, 0.62]},
+    }
+    kinds = ["glaze_blue", "terracotta", "chrome", "glaze_cream", "clear_glass"]
+    for row in range(3):
+        for col in range(5):
+            i = row * 5 + col
+            name = f"vessel_{i + 1}"
+            height = 0.18 + 0.04 * ((i * 7) % 5)
+            radius = 0.045 + 0.006 * ((i * 3) % 4)
+            profiles[name] = {"points": pts(turned_vessel(height, radius, 1 + i % 3, n))}
+            objects.append({"profile": name, "material": kinds[(i + row) % 5], "name": name,
+                            "translate": [r6(-0.46 + 0.22 * col + 0.05 * row), r6(0.25 * row), 0.0]})
+    quads = [{"corners": [[-2, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]], "material": "table"},
+             {"corners": [[-2, 0.9, 0], [2, 0.9, 0], [2, 0.9, 2], [-2, 0.9, 2]], "material": "wall"}]
+    dump("vessels.json", {
+        "description": f"Fifteen turned vessels on a table, each a distinct profile of about {2 * n} points: "
+                       "lathe-heavy. Written by make_scenes.py.",
+        "camera": {"from": [0.03, -1.7, 0.75], "to": [0.03, 0.22, 0.12], "up": [0, 0, 1], "fov": 30,
+                   "width": 640, "height": 480, "spp": 16},
+        "profiles": profiles,
+        "materials": materials,
+        "objects": objects,
+        "quads": quads,
+        "lights": [{"type": "point", "position": [-1.0, -1.2, 1.6], "intensity": [3.0, 2.9, 2.7]},
+                   {"type": "point", "position": [1.2, -0.6, 1.0], "intensity": [0.8, 0.85, 1.0]}],
+        "environment": {"color": [0.3, 0.3, 0.33]},
+    }, compact_points=True)
+
+
 if __name__ == "__main__":
     patio()
+    patio(points_only=True)
     still_life()
+    vessels()
     many()

@@ -2,8 +2,10 @@
 # Installs the Debian 12 packages revolve needs, skipping those already installed.
 # Usage: scripts/install-deps.sh [--test]
 #   (none)   what the main job builds and runs: the library and revolve-render
-#   --test   also what the whole test suite needs: GoogleTest, Google Benchmark, clang with its
-#            sanitizer and libFuzzer runtimes, matplotlib (revolve-lidar --plot, bench/plot_results.py)
+#   --test   also what the whole test suite and the benchmarks need: GoogleTest, Google Benchmark,
+#            clang with its sanitizer and libFuzzer runtimes, matplotlib (revolve-lidar --plot,
+#            bench/plot_results.py), POV-Ray 3.7 (revolve-bench pov, the export's round-trip test)
+#            and the DejaVu font (the side-by-side figure's labels)
 set -euo pipefail
 
 packages=(
@@ -16,7 +18,7 @@ packages=(
 )
 case "${1:-}" in
   "") ;;
-  --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3-matplotlib) ;;
+  --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3-matplotlib povray fonts-dejavu-core) ;;
   *) echo "usage: $0 [--test]" >&2; exit 2 ;;
 esac
 

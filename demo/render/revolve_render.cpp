@@ -7,6 +7,7 @@
 #include "glass_checks.h"
 #include "image_output.h"
 #include "io/output_set.h"
+#include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "progress.h"
 #include "renderer.h"
@@ -18,6 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,7 +33,7 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick, exportPov;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -135,6 +137,25 @@ io::SceneDescription readScene(const Options& options) {
   return description;
 }
 
+// --export-pov: the scene as POV-Ray SDL (io/pov_scene.h), with whitted's depth and shadows as the
+// file's defaults, into the run's outputs. What maps only approximately is reported as a warning.
+void exportPov(const Options& options, const io::SceneDescription& description, io::OutputSet& outputs) {
+  io::PovDefaults defaults;
+  defaults.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
+  defaults.shadows = !options.noShadows;
+  const io::PovScene pov = io::povScene(description, defaults);
+  outputs.stream(options.exportPov).write(pov.text);
+  for (const std::string& warning : pov.warnings) {
+    std::fprintf(stderr, "revolve-render: warning: %s: %s\n", options.exportPov.c_str(), warning.c_str());
+  }
+}
+
+void checkPovName(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".pov") throw std::runtime_error(path + ": --export-pov writes POV-Ray scene files, named .pov");
+}
+
 void run(const Options& options) {
   if (!options.pick.empty()) {
     // Picking prints what lies under a pixel and renders nothing: an output would stay unwritten.
@@ -146,19 +167,33 @@ void run(const Options& options) {
     pickObject(options, description, width, height);
     return;
   }
+  // With --export-pov and no -o, only the SDL is written.
+  const bool renders = options.exportPov.empty() || !options.output.empty();
   const std::string output =
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
-  render::imageFormatFor(output);  // an unknown extension fails before any work
+  if (!options.exportPov.empty()) checkPovName(options.exportPov);
+  if (!renders && !options.stats.empty()) {
+    throw std::runtime_error("--stats: --export-pov without -o renders nothing to report; add -o to render as well");
+  }
+  if (renders) render::imageFormatFor(output);  // an unknown extension fails before any work
   const io::SceneDescription description = readScene(options);
-  for (const std::string& warning : render::glassWarnings(description)) {
-    std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+  if (renders) {
+    for (const std::string& warning : render::glassWarnings(description)) {
+      std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+    }
   }
   // Every output is named now (its temporary made: the folder takes files), and none may be an input.
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
   for (const io::SceneProfile& profile : description.profiles) outputs.addInput("a profile CSV of the scene", profile.csvFile);
-  outputs.add("-o", output);
-  if (!options.stats.empty()) outputs.add("--stats", options.stats);
+  if (!options.exportPov.empty()) outputs.add("--export-pov", options.exportPov);
+  if (renders) outputs.add("-o", output);
+  if (renders && !options.stats.empty()) outputs.add("--stats", options.stats);
+  if (!options.exportPov.empty()) exportPov(options, description, outputs);
+  if (!renders) {
+    outputs.commit();
+    return;
+  }
 
   render::RenderSettings settings;
   settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
@@ -244,11 +279,16 @@ int main(int argc, char** argv) {
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))
       ->capture_default_str();
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory")->check(app::kNonEmpty);
+  CLI::Option* exportOption =
+      app.add_option("--export-pov", options.exportPov,
+                     "write the scene as POV-Ray SDL (FILE.pov; size from POV-Ray's +W +H) and render only if -o is given")
+          ->check(app::kNonEmpty);
   app.add_option("--pick", options.pick,
                  "X,Y: instead of rendering, print the object under pixel (X, Y) of the image (from its top left): "
                  "its index, name, hit point and distance, or \"nothing\" (no -o or --stats with it)")
       ->check(CLI::Validator([](std::string& value) { return value.empty() ? std::string("the value is empty; expected X,Y") : std::string(); },
-                             "X,Y"));
+                             "X,Y"))
+      ->excludes(exportOption);
   if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-render")) return *status;
   return app::runTool("revolve-render", options.scene, [&] { run(options); });
 }

@@ -446,6 +446,15 @@ Stats EmbreeScene::stats() const noexcept {
   return total;
 }
 
+std::size_t EmbreeScene::treeNodeCount() const noexcept {
+  std::size_t nodes = 0;
+  for (const Instance& instance : instances_) {
+    const Prototype& prototype = *prototypes_[instance.prototype];
+    if (prototype.shape) nodes += prototype.shape->treeNodeCount();
+  }
+  return nodes;
+}
+
 std::size_t EmbreeScene::revolveBytes() const noexcept {
   std::size_t bytes = 0;
   for (const auto& prototype : prototypes_) {

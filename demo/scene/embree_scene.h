@@ -80,6 +80,9 @@ class EmbreeScene {
 
   std::uint64_t refusedRays() const noexcept { return refused_->load(std::memory_order_relaxed); }
   Stats stats() const noexcept;               // MIBIT counters summed over every prototype
+  // Search-tree nodes summed over the objects (an instanced tree counts once per object; meshes
+  // and the linear scan have none): the paper's denominator for "percent of nodes traversed".
+  std::size_t treeNodeCount() const noexcept;
   std::size_t revolveBytes() const noexcept;  // Shapes and shading normals
   std::int64_t embreeBytes() const noexcept;  // Embree's own allocations now (its memory monitor)
   std::int64_t embreePeakBytes() const noexcept;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <string>
@@ -100,6 +101,58 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
   // A refused configuration is one row with its reason, quoted (the reasons hold commas).
   EXPECT_NE(csv.find("speed_error,goblet,embree_cone,16,0,,,,,,,,,,,,,,\"the segment from profile point"), std::string::npos);
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 100);
+}
+
+TEST(RevolveBenchTest, QuickPaperTableProducesEveryFigure) {
+  const ScratchDirectory scratch;
+  const std::string jsonPath = scratch / "paper.json";
+  const auto run = runProcess(REVOLVE_BENCH_PATH, {"paper-table", "--quick", "--scene", REVOLVE_SOURCE_DIR "/scenes/patio.json",
+                                                   "--json", jsonPath});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const json document = json::parse(revolve::testing::readWholeFile(jsonPath));
+  // The paper's own figures are null where its table (as our copy has it) has none.
+  expectFinite(document, "", {"improved_percent", "nodes_percent", "shell_millions", "quadratic_millions"});
+  for (const char* key : {"command", "date", "machine", "settings"}) EXPECT_TRUE(document.contains(key)) << key;
+  EXPECT_EQ(document["settings"]["threads"], 1);
+  ASSERT_EQ(document["examples"].size(), 2u);
+  std::set<int> tables;
+  for (const json& example : document["examples"]) {
+    tables.insert(example["paper"]["table"].get<int>());
+    // KJ, the three shells x monotone split x range search, the wide tree.
+    ASSERT_EQ(example["rows"].size(), 14u);
+    std::set<std::string> variants;
+    for (const json& row : example["rows"]) {
+      const std::string label = row["row"];
+      variants.insert(label + (row["monotone_split"].get<bool>() ? "+MI" : "") + (row["range_search"].get<bool>() ? "+RS" : ""));
+      for (const char* figure : {"total_seconds", "mrays_per_second", "shell_tests_millions", "quadratics_millions",
+                                 "nodes_traversed_percent", "speedup_over_kj"}) {
+        EXPECT_GT(row[figure].get<double>(), 0.0) << label << " " << figure;
+      }
+      EXPECT_GT(row["render_seconds"]["median"].get<double>(), 0.0) << label;
+      EXPECT_GT(row["counters"]["tree_nodes"].get<double>(), 0.0) << label;
+      EXPECT_EQ(row["rays"]["camera"], 24 * 24) << label;
+      EXPECT_TRUE(row["same_image_as_kj"].get<bool>()) << label << ": every row traces the same rays to the same hits";
+    }
+    EXPECT_EQ(variants.size(), 14u);
+    EXPECT_FALSE(example["paper"]["rows"].empty());
+  }
+  EXPECT_EQ(tables, (std::set<int>{2, 4}));
+  EXPECT_NE(run.out.find("Table 4"), std::string::npos) << "the paper's figures are printed beside ours";
+}
+
+TEST(RevolveBenchTest, PovComparisonSaysSoAndSucceedsWhenPovrayIsAbsent) {
+  // The POV-Ray runs are documented commands, not CI steps: without povray on PATH they skip.
+  const std::string saved = std::getenv("PATH") != nullptr ? std::getenv("PATH") : "";
+  const ScratchDirectory scratch;
+  setenv("PATH", scratch.path().c_str(), 1);
+  const auto run = runProcess(REVOLVE_BENCH_PATH, {"pov", "--scene", REVOLVE_SOURCE_DIR "/scenes/patio_points.json", "--out", scratch / "out"});
+  const auto scaling = runProcess(REVOLVE_BENCH_PATH, {"pov-scaling", "--out", scratch / "out"});
+  setenv("PATH", saved.c_str(), 1);
+  EXPECT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.err, "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, or scripts/install-deps.sh --test)\n");
+  EXPECT_EQ(scaling.status, 0) << scaling.err;
+  EXPECT_EQ(scaling.err, run.err);
+  EXPECT_TRUE(scratch.entries().empty());
 }
 
 TEST(RevolveBenchTest, BadCameraSizeIsAnErrorAndWritesNothing) {

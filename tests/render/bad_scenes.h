@@ -35,6 +35,13 @@ inline std::string replaced(std::string text, const std::string& from, const std
   return text;
 }
 
+// A valid profile CSV of `points` points: a gently wavy wall, strictly rising.
+inline std::string longProfileCsv(int points) {
+  std::string csv = "r,z\n";
+  for (int i = 0; i < points; ++i) csv += std::to_string(0.3 + 0.01 * (i % 7)) + "," + std::to_string(i * 1e-3) + "\n";
+  return csv;
+}
+
 struct BadCase {
   const char* name;
   std::string scene;                  // the scene file's text
@@ -116,6 +123,11 @@ inline std::vector<BadCase> badCases() {
        "object 1 (profile \"bottle\") is scaled by (0.5, 0.5, 0.5): Embree's linear cone curve kernel assumes unit ray "
        "directions",
        kBottleCsv, true},
+      {"PovExportName", kScene, {"--export-pov", "scene.txt"}, "scene.txt: --export-pov writes POV-Ray scene files, named .pov",
+       kBottleCsv, true},
+      {"UnwritablePovExport", kScene, {"--export-pov", "no/such/scene.pov"}, "no/such/scene.pov: cannot create a file", kBottleCsv, true},
+      {"PovLatheBeyondLimit", kScene, {"--export-pov", "scene.pov"},
+       "scene.json: profiles.bottle: 32768 points: a POV-Ray lathe holds at most 32767", longProfileCsv(32768), true},
   };
 }
 

@@ -23,6 +23,7 @@ using ::testing::StartsWith;
 using testing::BadCase;
 using testing::kBottleCsv;
 using testing::kScene;
+using testing::replaced;
 using testing::ScratchDirectory;
 using testing::readWholeFile;
 
@@ -120,6 +121,42 @@ std::vector<BadCase> processCases() {
 // message of the reader in process.
 INSTANTIATE_TEST_SUITE_P(Cases, RevolveRenderBadInputTest, ::testing::ValuesIn(processCases()),
                          [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+
+TEST(RevolveRenderCliTest, ExportPovWritesTheSdlAndRendersOnlyWithAnOutput) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kScene);
+  dir.write("bottle.csv", kBottleCsv);
+  const Result exported = runRender(dir.path(), {"scene.json", "--export-pov", "scene.pov"});
+  ASSERT_EQ(exported.status, 0) << exported.err;
+  EXPECT_EQ(exported.err, "") << "everything in this scene maps to POV-Ray exactly";
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv", "scene.pov"})) << "no image without -o";
+  const std::string sdl = readWholeFile(dir / "scene.pov");
+  EXPECT_GT(std::count(sdl.begin(), sdl.end(), '\n'), 20);
+  EXPECT_THAT(sdl, HasSubstr("lathe {"));
+
+  const Result both = runRender(dir.path(), {"scene.json", "--export-pov", "again.pov", "-o", "image.png"});
+  ASSERT_EQ(both.status, 0) << both.err;
+  EXPECT_EQ(readWholeFile(dir / "again.pov"), sdl);
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv", "scene.pov", "again.pov", "image.png"}));
+
+  // What maps only approximately is said on stderr, one warning a line, and the file is still written.
+  dir.write("metal.json", replaced(kScene, R"({"type": "diffuse", "color": [0.8, 0.8, 0.8]})",
+                                   R"({"type": "metal", "color": [0.8, 0.8, 0.8], "roughness": 0.4})"));
+  const Result metal = runRender(dir.path(), {"metal.json", "--export-pov", "metal.pov"});
+  ASSERT_EQ(metal.status, 0) << metal.err;
+  EXPECT_EQ(metal.err, "revolve-render: warning: metal.pov: materials.white: metal of roughness 0.4 has no POV-Ray equivalent "
+                       "(no microfacet lobe); written as a mirror of its colour with a Blinn highlight\n");
+}
+
+TEST(RevolveRenderCliTest, StatsWithAnExportAloneIsAnError) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kScene);
+  dir.write("bottle.csv", kBottleCsv);
+  const Result result = runRender(dir.path(), {"scene.json", "--export-pov", "scene.pov", "--stats", "stats.json"});
+  EXPECT_EQ(result.status, 1);
+  EXPECT_EQ(result.err, "revolve-render: --stats: --export-pov without -o renders nothing to report; add -o to render as well\n");
+  EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv"}));
+}
 
 TEST(RevolveRenderCliTest, MissingSceneFileIsOneLine) {
   const ScratchDirectory dir;
