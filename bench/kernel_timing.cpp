@@ -1,0 +1,104 @@
+// revolve-kernel-timing: MIBIT's cost a ray at given profile resolutions on the benchmark's test
+// shapes, against the one-quadratic user primitive, in CPU time of this thread.
+//
+//   revolve-kernel-timing SHAPE POINTS,POINTS,... incoherent|camera8 REPETITIONS
+//
+// Prints one line per configuration: "SHAPE CONFIG ns/ray" (the median over the repetitions, each a
+// pass over the rays). Thread CPU time, not wall time: on a shared machine a process that waits for
+// a core is not charged for the wait, so two builds timed alternately compare fairly
+// (scripts/compare-kernels.sh). It uses only the benchmark library's rays, shapes and scenes, which
+// every revision of the benchmark has had, so it compiles against older builds too.
+#include "ray_batches.h"
+#include "ray_sets.h"
+#include "test_shapes.h"
+#include "traced_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace revolve;
+using namespace revolve::bench;
+
+double threadSeconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+std::vector<int> parsePoints(const std::string& text) {
+  std::vector<int> points;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find(',', at);
+    if (end == std::string::npos) end = text.size();
+    points.push_back(std::stoi(text.substr(at, end - at)));
+    at = end + 1;
+  }
+  return points;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: %s SHAPE POINTS,POINTS,... incoherent|camera8 REPETITIONS\n", argv[0]);
+    return 2;
+  }
+  const std::string shapeName = argv[1], mode = argv[3];
+  const std::vector<int> points = parsePoints(argv[2]);
+  const int repetitions = std::atoi(argv[4]);
+  const std::vector<SmoothProfile> shapes = testShapes();
+  const auto shape = std::find_if(shapes.begin(), shapes.end(), [&](const SmoothProfile& s) { return s.name() == shapeName; });
+  if (shape == shapes.end() || points.empty() || repetitions < 1 || (mode != "incoherent" && mode != "camera8")) {
+    std::fprintf(stderr, "%s: bad arguments (shapes: sphere torus vase goblet bottle)\n", argv[0]);
+    return 2;
+  }
+
+  RTCDevice device = rtcNewDevice("threads=1");
+  {
+    const MemoryMonitor monitor(device);
+    const SmoothProfile::Extent e = shape->extent();
+    const Box box{{-e.rMax, -e.rMax, e.zLow}, {e.rMax, e.rMax, e.zHigh}};
+    // The benchmark's own rays: 200,000 incoherent ones (seed 1) or its 512 x 512 camera.
+    const std::vector<Ray> rays = mode == "incoherent" ? incoherentRays(box, 200000, 1) : cameraRays(box, 512, 512);
+    const auto packets = packetsOf(rays);
+    const AnalyticSphere sphere{{0.0, 0.0, 0.5 * (e.zLow + e.zHigh)}, std::min(e.rMax, 0.5 * (e.zHigh - e.zLow))};
+
+    std::vector<std::pair<std::string, std::unique_ptr<TracedScene>>> scenes;
+    scenes.emplace_back("sphere_primitive", std::make_unique<TracedScene>(device, monitor, *shape, MethodConfig{MethodKind::sphere}, sphere));
+    for (int n : points) {
+      MethodConfig config;
+      config.kind = MethodKind::mibit;
+      config.points = n;
+      scenes.emplace_back("mibit_" + std::to_string(n), std::make_unique<TracedScene>(device, monitor, *shape, config, sphere));
+    }
+    // Interleaved: each repetition times every configuration once, so that a slow spell of the
+    // machine falls on all of them.
+    std::vector<std::vector<double>> nanoseconds(scenes.size());
+    for (int r = 0; r < repetitions; ++r) {
+      for (std::size_t i = 0; i < scenes.size(); ++i) {
+        auto batch = mode == "camera8" ? packetBatch(scenes[i].second->scene(), packets) : singleRayBatch(scenes[i].second->scene(), rays);
+        const double start = threadSeconds();
+        std::size_t traced = 0;
+        while (traced < rays.size()) traced += batch();
+        nanoseconds[i].push_back((threadSeconds() - start) / double(traced) * 1e9);
+      }
+    }
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      std::vector<double>& v = nanoseconds[i];
+      std::sort(v.begin(), v.end());
+      std::printf("%s %s %.2f\n", shapeName.c_str(), scenes[i].first.c_str(), v[v.size() / 2]);
+    }
+  }
+  rtcReleaseDevice(device);
+  return 0;
+}
