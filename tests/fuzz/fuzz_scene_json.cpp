@@ -11,7 +11,7 @@
 #include "common/vector_math.h"
 #include "fuzz_checks.h"
 #include "io/scene_file.h"
-#include "render/camera.h"
+#include "scene/camera.h"
 #include "scene/embree_scene.h"
 
 #include <cmath>
@@ -39,7 +39,7 @@ void checkPosition(const io::Vec3d& p) {
 // every light and a ray back along the normal.
 void traceLikeTheRenderer(const io::SceneDescription& scene) {
   const scene::EmbreeScene built(scene, {});
-  const render::Camera camera(scene.camera, 4, 3);
+  const scene::Camera camera(scene.camera, 4, 3);
   for (int y = 0; y < 3; ++y) {
     for (int x = 0; x < 3; ++x) {
       const Ray ray = camera.ray(0.5f + 1.5f * float(x), 0.5f + float(y));
