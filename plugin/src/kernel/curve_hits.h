@@ -30,6 +30,7 @@
 #include "curve/cubic.h"
 #include "kernel/meridian_ray.h"
 #include "kernel/segment_hits.h"
+#include "util/rounding.h"
 
 #include <revolve/revolve.h>
 
@@ -274,13 +275,17 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
     if (std::abs(s3 - s0) <= 0x1p8 * sphereRadius || (std::min(s0, s3) >= lo && std::max(s0, s3) <= hi)) {
       isolateRoots<kFirstOnly>(view, lo, hi, 0.0, 1.0, hits);
     } else {
-      // A stretch far longer than the shape: restrict the part to the heights the ray has in [lo, hi]
-      // (widened, so that no root at lo or hi is lost to the parameter's rounding; roots found
-      // outside [lo, hi] are dropped).
+      // A stretch far longer than the shape: restrict the part to the heights the ray has in [lo, hi],
+      // widened so that the restriction's end heights, as evaluated, still lie beyond the ray's:
+      // by the evaluation error of z (de Casteljau's three levels, within 8 u max |z_i|) over the
+      // slope there, and by 2^-20 of the span. Roots found outside [lo, hi] are dropped.
       const double uLo = monotoneParameter(part.z, ray.zAt(lo)), uHi = monotoneParameter(part.z, ray.zAt(hi));
       const double span = std::abs(uHi - uLo);
-      const double ua = std::max(0.0, std::min(uLo, uHi) - 0x1p-20 * span - 0x1p-52);
-      const double ub = std::min(1.0, std::max(uLo, uHi) + 0x1p-20 * span + 0x1p-52);
+      const double zError = 8.0 * kUnitRoundoff * std::max({std::abs(part.z[0]), std::abs(part.z[1]), std::abs(part.z[2]), std::abs(part.z[3])});
+      const double slope = std::abs(cubicDerivative(part.z, 0.5 * (uLo + uHi)));
+      const double widen = 0x1p-20 * span + 0x1p-52 + (slope > 0.0 ? 4.0 * zError / slope : 1.0);
+      const double ua = std::max(0.0, std::min(uLo, uHi) - widen);
+      const double ub = std::min(1.0, std::max(uLo, uHi) + widen);
       if (ub - ua <= 0x1p-28) {
         // The chord of so short a restriction lies within the coordinates' rounding of it.
         const Point2 a{cubicAt(part.r, ua), cubicAt(part.z, ua)}, b{cubicAt(part.r, ub), cubicAt(part.z, ub)};
