@@ -98,10 +98,12 @@ class Profile {
   // and profiles that are not monotone in z are all valid.
   explicit Profile(std::span<const Point2> points);
 
-  // The fewest points on `curve` (its joins, its ends, and as few points between as the tolerance
-  // allows) whose polyline stays within `tolerance` of the curve: every chord's largest distance
-  // from the arc it replaces, computed per arc from its cubic (adaptive in curvature: a straight
-  // run gets no point between its ends). A linear spline gives its own points. Throws
+  // The fewest points on `curve` whose polyline stays within `tolerance` of it: from each point,
+  // the chord reaching farthest along the curve whose largest distance from the arc it replaces
+  // (computed exactly, piece by piece, from the cubics) is within the tolerance. Adaptive in
+  // curvature: a straight run gets no point between its ends, and a chord may span a smooth join;
+  // the ends and every corner (a join where the tangent turns) are kept as vertices. A linear
+  // spline gives its own points. Throws
   // std::invalid_argument unless tolerance > 0 and finite, and ProfileError when the polyline
   // itself is not a valid profile (a tolerance wider than a gap between two parts of the curve).
   static Profile fromCurve(const Spline& curve, double tolerance);

@@ -20,6 +20,25 @@ class CurveWalk {
 
   std::size_t pieces() const { return pieces_; }
 
+  // Whether the curve turns a corner where piece k - 1 ends and piece k begins: the tangents
+  // (towards the first control point apart from the join) differ by more than the rounding of the
+  // control points (8 u in the sine of their angle), or point against each other.
+  bool cornerAt(std::size_t k) const {
+    const Point2* before = &bezier_[3 * k - 3];
+    const Point2* after = &bezier_[3 * k];
+    const auto direction = [](Point2 from, Point2 a, Point2 b, Point2 c) {
+      for (const Point2 p : {a, b, c}) {
+        if (p.r != from.r || p.z != from.z) return Point2{p.r - from.r, p.z - from.z};
+      }
+      return Point2{0.0, 0.0};
+    };
+    const Point2 in = direction(before[3], before[2], before[1], before[0]);  // backwards along piece k - 1
+    const Point2 out = direction(after[0], after[1], after[2], after[3]);
+    const double cross = in.r * out.z - in.z * out.r, dot = in.r * out.r + in.z * out.z;
+    // Smooth when `in` and `out` point opposite ways (the curve goes straight on).
+    return !(dot < 0.0 && std::abs(cross) <= 8.0 * 0x1p-53 * std::hypot(in.r, in.z) * std::hypot(out.r, out.z));
+  }
+
   Point2 at(double T) const {
     const auto [k, u] = split(T);
     return pieceAt(k, u);
@@ -101,10 +120,19 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
                                 detail::formatNumber(extent) + ", finer than double-precision chords resolve");
   }
   const CurveWalk walk(curve);
-  const double end = double(walk.pieces());
+  const double last = double(walk.pieces());
+  // Chords may span smooth joins but not corners, which stay vertices (a rim stays sharp).
+  std::vector<double> corners;
+  for (std::size_t k = 1; k < walk.pieces(); ++k) {
+    if (walk.cornerAt(k)) corners.push_back(double(k));
+  }
+  corners.push_back(last);
   std::vector<Point2> points{walk.at(0.0)};
   double T = 0.0;
-  while (T < end) {
+  std::size_t nextCorner = 0;
+  while (T < last) {
+    while (corners[nextCorner] <= T) ++nextCorner;
+    const double end = corners[nextCorner];
     if (walk.chordError(T, end) <= tolerance) {
       T = end;
     } else {
