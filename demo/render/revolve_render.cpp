@@ -1,6 +1,7 @@
 // revolve-render: renders a scene file (io/scene_file.h) with path tracing or the paper's Whitted
 // ray tracer, every surface of revolution traced exactly by revolve inside Embree (or tessellated,
 // for comparison). Options and the scene format are documented in README.md.
+#include "curve_tolerance.h"
 #include "image_output.h"
 #include "io/scene_file.h"
 #include "io/text_files.h"
@@ -25,7 +26,7 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", stats, pick, tolerance;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -46,7 +47,7 @@ scene::BuildSettings buildSettings(const Options& options) {
 }
 
 void writeStats(const Options& options, const render::RenderSettings& settings, const scene::EmbreeScene& built,
-                const render::RenderResult& result, std::size_t objects) {
+                const render::RenderResult& result, std::size_t objects, const std::vector<render::CurvePolyline>& curves) {
   const std::uint64_t total = result.rays.camera + result.rays.bounce + result.rays.shadow;
   const Stats mibit = built.stats();
   nlohmann::ordered_json json;
@@ -68,6 +69,12 @@ void writeStats(const Options& options, const render::RenderSettings& settings, 
                    {"quadratics", mibit.quadratics}};
   json["memory"] = {{"revolve_bytes", built.revolveBytes()}, {"embree_bytes", built.embreeBytes()},
                     {"embree_peak_bytes", built.embreePeakBytes()}};
+  if (!options.tolerance.empty()) {
+    json["tolerance"] = options.tolerance;
+    nlohmann::ordered_json polylines = nlohmann::ordered_json::array();
+    for (const render::CurvePolyline& c : curves) polylines.push_back({{"profile", c.profile}, {"tolerance", c.tolerance}, {"points", c.points}});
+    json["curves_as_polylines"] = polylines;
+  }
   const std::string text = json.dump(2) + "\n";
   io::writeFileAtomically(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
 }
@@ -122,7 +129,9 @@ void run(const Options& options) {
   const std::string output =
       !options.output.empty() ? options.output : std::filesystem::path(options.scene).stem().string() + ".png";
   render::imageFormatFor(output);  // an unknown extension fails before any work
-  const io::SceneDescription description = io::readScene(options.scene);
+  std::optional<render::CurveTolerance> tolerance;
+  if (!options.tolerance.empty()) tolerance = render::parseCurveTolerance(options.tolerance);
+  io::SceneDescription description = io::readScene(options.scene);
   for (const io::SceneProfile& profile : description.profiles) {
     for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
   }
@@ -139,13 +148,15 @@ void run(const Options& options) {
   settings.integrator.depth = options.depth > 0 ? options.depth : (options.integrator == "whitted" ? 4 : 8);
   settings.integrator.shadows = !options.noShadows;
 
+  std::vector<render::CurvePolyline> curves;
+  if (tolerance) curves = render::applyCurveTolerance(description, *tolerance, settings.height);
   const scene::EmbreeScene built(description, buildSettings(options));
   render::ProgressReport progress;
   const render::RenderResult result =
       render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
   progress.finish();
   render::writeImage(output, result.image);
-  if (!options.stats.empty()) writeStats(options, settings, built, result, description.objects.size());
+  if (!options.stats.empty()) writeStats(options, settings, built, result, description.objects.size(), curves);
 }
 
 }  // namespace
@@ -173,6 +184,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-range-search", options.noRangeSearch, "MIBIT: test every node's shell");
   app.add_option("--subdivisions", options.subdivisions, "MIBIT leaves per monotone interval (0: one segment a leaf)")->capture_default_str();
   app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")->check(CLI::Range(3u, 1u << 16))->capture_default_str();
+  app.add_option("--tolerance", options.tolerance,
+                 "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
+                 "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile");
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(CLI::Range(1, 1024));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")->capture_default_str();
   app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory");
