@@ -5,7 +5,9 @@
 
 writes OUTDIR/speed_vs_error.png (incoherent rays, rtcIntersect1), OUTDIR/speed_vs_error_camera.png
 (camera rays, rtcIntersect8), OUTDIR/memory_vs_error.png and OUTDIR/scaling.png. Every point is a
-figure of the JSON; meshes are drawn as their whole grid with the best of them per error joined.
+figure of the JSON; meshes are drawn as their whole grid with the best of them per error joined;
+the spline traced exactly is a star, its polylines (adaptive, evenly spaced) and the adaptive
+polylines' meshes are lines.
 """
 import json
 import os
@@ -24,6 +26,10 @@ STYLE = {
     "linear": dict(color="tab:gray", marker="s", label="Wang's linear scan"),
     "kajiya": dict(color="tab:brown", marker="D", label="Kajiya's strip tree"),
     "mesh": dict(color="tab:red", marker=".", label="Embree triangle mesh"),
+    "spline": dict(color="black", marker="*", label="spline, traced exactly"),
+    "adaptive": dict(color="tab:olive", marker="P", label="adaptive polyline of the spline (MIBIT)"),
+    "uniform": dict(color="tab:pink", marker="+", label="evenly spaced polyline (MIBIT)"),
+    "mesh_adaptive": dict(color="tab:orange", marker="d", label="mesh of the adaptive polyline"),
 }
 
 
@@ -59,6 +65,8 @@ def speed_panel(ax, shape, mode):
             ax.scatter(*zip(*points), s=8, color=style["color"], alpha=0.35)
             best = frontier(points, lambda y, previous: y > previous)
             ax.plot(*zip(*best), color=style["color"], label=style["label"] + " (best of grid)")
+        elif method == "spline":
+            ax.scatter(*zip(*points), s=90, color=style["color"], marker=style["marker"], zorder=5, label=style["label"])
         else:
             ax.plot(*zip(*sorted(points)), color=style["color"], marker=style["marker"], ms=3, label=style["label"])
     if floor is not None:
@@ -72,14 +80,22 @@ def speed_panel(ax, shape, mode):
 
 
 def memory_panel(ax, shape):
-    mibit, mesh = [], []
+    mibit, mesh, adaptive, spline = [], [], [], []
     for config in shape["configs"]:
         error = error_of(config, "incoherent_1")
         if config["method"] == "mibit":
             mibit.append((error, config["total_bytes"]))
         elif config["method"] == "mesh":
             mesh.append((error, config["total_bytes"]))
+        elif config["method"] == "adaptive":
+            adaptive.append((error, config["total_bytes"]))
+        elif config["method"] == "spline":
+            spline.append((error, config["total_bytes"]))
     ax.plot(*zip(*sorted(mibit)), color=STYLE["mibit"]["color"], marker="o", ms=3, label=STYLE["mibit"]["label"])
+    if adaptive:
+        ax.plot(*zip(*sorted(adaptive)), color=STYLE["adaptive"]["color"], marker="P", ms=3, label=STYLE["adaptive"]["label"])
+    if spline:
+        ax.scatter(*zip(*spline), s=90, color="black", marker="*", zorder=5, label=STYLE["spline"]["label"])
     ax.scatter(*zip(*mesh), s=8, color=STYLE["mesh"]["color"], alpha=0.35)
     leanest = frontier(mesh, lambda y, previous: y < previous)
     ax.plot(*zip(*leanest), color=STYLE["mesh"]["color"], label="Embree triangle mesh (leanest of grid)")
@@ -92,14 +108,14 @@ def memory_panel(ax, shape):
 
 
 def grid_figure(shapes, draw, ylabel, title, path):
-    fig, axes = plt.subplots(1, len(shapes), figsize=(max(4 * len(shapes), 12), 4.4), squeeze=False)
+    fig, axes = plt.subplots(1, len(shapes), figsize=(max(4 * len(shapes), 12), 4.8), squeeze=False)
     for ax, shape in zip(axes[0], shapes):
         draw(ax, shape)
     axes[0][0].set_ylabel(ylabel)
     handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9, frameon=False)
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.suptitle(title)
-    fig.tight_layout(rect=(0, 0.1, 1, 0.95))
+    fig.tight_layout(rect=(0, 0.14, 1, 0.95))
     fig.savefig(path, dpi=90)
     plt.close(fig)
 

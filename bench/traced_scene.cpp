@@ -1,6 +1,7 @@
 #include "traced_scene.h"
 
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 
 namespace revolve::bench {
@@ -14,14 +15,26 @@ std::string MethodConfig::method() const {
     case MethodKind::kajiya: return "kajiya";
     case MethodKind::mesh: return "mesh";
     case MethodKind::sphere: return "sphere";
+    case MethodKind::spline: return "spline";
+    case MethodKind::adaptive: return "adaptive";
+    case MethodKind::uniform: return "uniform";
+    case MethodKind::adaptiveMesh: return "mesh_adaptive";
   }
   return "?";
 }
 
 std::string MethodConfig::label() const {
-  if (kind == MethodKind::sphere) return "analytic sphere";
-  if (kind == MethodKind::mesh) return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
-  return method() + " " + std::to_string(points);
+  char tolerance[16];
+  std::snprintf(tolerance, sizeof tolerance, "%.0e", this->tolerance);
+  switch (kind) {
+    case MethodKind::sphere: return "analytic sphere";
+    case MethodKind::mesh: return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
+    case MethodKind::spline: return "spline exact";
+    case MethodKind::adaptive: return "adaptive " + std::string(tolerance) + " (" + std::to_string(points) + ")";
+    case MethodKind::adaptiveMesh:
+      return "mesh adapt " + std::string(tolerance) + " " + std::to_string(points) + "x" + std::to_string(slices);
+    default: return method() + " " + std::to_string(points);
+  }
 }
 
 MemoryMonitor::MemoryMonitor(RTCDevice device) { rtcSetDeviceMemoryMonitorFunction(device, record, this); }
@@ -31,7 +44,7 @@ bool MemoryMonitor::record(void* user, ssize_t bytes, bool /*post*/) {
   return true;
 }
 
-TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile,
+TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const Spline& spline,
                          const MethodConfig& config, const AnalyticSphere& sphere)
     : config_(config), sphere_(sphere) {
   const std::int64_t before = monitor.bytes();
@@ -41,13 +54,33 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
   RTCGeometry geometry = nullptr;
   switch (config.kind) {
     case MethodKind::sphere: geometry = newAnalyticSphereGeometry(device, sphere_); break;
-    case MethodKind::mesh: {
-      const Profile polyline(profile.sample(config.points));
+    case MethodKind::mesh:
+    case MethodKind::adaptiveMesh: {
+      const Profile polyline = config.kind == MethodKind::mesh ? Profile(profile.sample(config.points))
+                                                               : Profile::fromCurve(spline, config.tolerance * profile.size());
       geometry = newTessellatedGeometry(device, polyline, std::uint32_t(config.slices));
       triangles_ = 2ull * polyline.segmentCount() * std::uint64_t(config.slices);
+      points_ = int(polyline.points().size());
+      break;
+    }
+    case MethodKind::spline:
+    case MethodKind::adaptive:
+    case MethodKind::uniform: {
+      if (config.kind == MethodKind::spline) {
+        shape_ = std::make_unique<Shape>(spline);
+        points_ = int(spline.points().size());
+      } else {
+        Profile polyline = config.kind == MethodKind::adaptive ? Profile::fromCurve(spline, config.tolerance * profile.size())
+                                                               : Profile(profile.sampleUniform(config.points));
+        points_ = int(polyline.points().size());
+        shape_ = std::make_unique<Shape>(std::move(polyline));
+      }
+      geometry_ = std::make_unique<Geometry>(device, *shape_);
+      revolveBytes_ = shape_->memoryBytes();
       break;
     }
     default: {
+      points_ = config.points;
       BuildOptions options;
       options.method = config.kind == MethodKind::linear   ? Method::linear
                        : config.kind == MethodKind::kajiya ? Method::kajiya

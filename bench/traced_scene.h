@@ -13,15 +13,23 @@
 
 namespace revolve::bench {
 
-enum class MethodKind { mibit, linear, kajiya, mesh, sphere };
+// The shapes as polylines (SmoothProfile::sample: every arc's chords of one sagitta) for MIBIT, the
+// baselines and meshes; as a spline (smooth_spline.h) for the curve methods:
+//   spline: the spline traced exactly (default MIBIT);
+//   adaptive: its polyline within a tolerance (Profile::fromCurve), traced by default MIBIT;
+//   uniform: the curve sampled at even steps along it (SmoothProfile::sampleUniform), default MIBIT;
+//   adaptiveMesh: the adaptive polyline tessellated.
+enum class MethodKind { mibit, linear, kajiya, mesh, sphere, spline, adaptive, uniform, adaptiveMesh };
 
 struct MethodConfig {
   MethodKind kind = MethodKind::mibit;
   ShellKind shell = ShellKind::cylinder;  // MIBIT only
-  int points = 0;                         // profile points (not for the analytic sphere)
+  int points = 0;                         // profile points (not for the analytic sphere; for adaptive, found when built)
   int slices = 0;                         // meshes only
   bool binary = false;                    // MIBIT with the paper's binary tree (BuildOptions::wideNodes off)
-  // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere"
+  double tolerance = 0;                   // adaptive and adaptiveMesh: Profile::fromCurve's, relative to the size
+  // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere",
+  // "spline", "adaptive", "uniform", "mesh_adaptive"
   std::string method() const;
   std::string label() const;              // method and resolution, e.g. "mesh 64x128"
 };
@@ -39,9 +47,10 @@ class MemoryMonitor {
 
 class TracedScene {
  public:
-  // The analytic sphere is built from `sphere`; every other method from profile.sample(points).
-  TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const MethodConfig& config,
-              const AnalyticSphere& sphere);
+  // The analytic sphere is built from `sphere`; the curve methods from `spline` (the profile's);
+  // every other method from profile.sample(points).
+  TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const Spline& spline,
+              const MethodConfig& config, const AnalyticSphere& sphere);
   ~TracedScene();
   TracedScene(const TracedScene&) = delete;
   TracedScene& operator=(const TracedScene&) = delete;
@@ -52,6 +61,7 @@ class TracedScene {
   std::size_t revolveBytes() const { return revolveBytes_; }  // Shape::memoryBytes(); 0 for meshes
   std::int64_t embreeBytes() const { return embreeBytes_; }   // BVH and buffers, from the monitor
   std::uint64_t triangles() const { return triangles_; }
+  int points() const { return points_; }  // the polyline's points (the spline's for an exact curve)
 
  private:
   MethodConfig config_;
@@ -63,6 +73,7 @@ class TracedScene {
   std::size_t revolveBytes_ = 0;
   std::int64_t embreeBytes_ = 0;
   std::uint64_t triangles_ = 0;
+  int points_ = 0;
 };
 
 }  // namespace revolve::bench

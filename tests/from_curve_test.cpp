@@ -42,10 +42,10 @@ TEST(FromCurveTest, EveryPolylineStaysWithinItsTolerance) {
       SCOPED_TRACE(named.name + ", tolerance " + std::to_string(tolerance));
       const Profile polyline = Profile::fromCurve(spline, tolerance);
       const std::span<const Point2> p = polyline.points();
-      EXPECT_LE(curveToPolyline(spline, p, 400), tolerance * (1 + 1e-9));
+      EXPECT_LE(curveToPolyline(spline, p, 200), tolerance * (1 + 1e-9));
       // And the other way: the polyline's points (vertices and chord middles) lie that close to the curve.
       for (std::size_t i = 0; i + 1 < p.size(); ++i) {
-        for (const double f : {0.0, 0.25, 0.5, 0.75}) {
+        for (const double f : {0.0, 0.5}) {
           const double r = p[i].r + f * (p[i + 1].r - p[i].r), z = p[i].z + f * (p[i + 1].z - p[i].z);
           EXPECT_LE(double(reference::curveMeridianDistance(spline.bezier(), r, 0, z)), tolerance * (1 + 1e-9));
         }

@@ -1,5 +1,5 @@
 // Building a Shape: the local frame, the bounding sphere and box, and the search structures.
-#include "curve/arc_length.h"
+#include "curve/arc_table.h"
 #include "curve/monotone_parts.h"
 #include "shape_impl.h"
 #include "util/rounding.h"
@@ -124,7 +124,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   double radius = 0.0;
   std::vector<detail::CurvePart> local;
   std::vector<Point2> knots{{parts[0].c[0].r, parts[0].c[0].z - zCentre}}, inner;
-  std::vector<double> arc{0.0};
+  std::vector<double> arc{0.0}, arcTable;
   local.reserve(parts.size());
   for (const detail::MonotonePart& part : parts) {
     detail::CurvePart c{};
@@ -137,7 +137,12 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.piece = part.piece;
     c.u0 = part.u0;
     c.u1 = part.u1;
-    c.length = detail::arcLength(c.r, c.z);
+    // Its length and its table of arc length (normalised to v below).
+    detail::ArcTable table = detail::arcTableOf(c.r, c.z);
+    c.length = table.length;
+    c.arcOffset = std::uint32_t(arcTable.size());
+    c.arcSteps = table.steps;
+    arcTable.insert(arcTable.end(), table.interleaved.begin(), table.interleaved.end());
     knots.push_back({c.r[3], c.z[3]});
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
@@ -145,7 +150,14 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     local.push_back(c);
   }
   const double total = arc.back();
-  for (std::size_t k = 0; k < local.size(); ++k) local[k].v0 = arc[k] / total, local[k].dv = local[k].length / total;
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    detail::CurvePart& c = local[k];
+    c.v0 = arc[k] / total;
+    c.dv = c.length / total;
+    double* entry = &arcTable[c.arcOffset];
+    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
+    entry[2 * c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
+  }
 
   std::vector<Point2> global;
   global.reserve(knots.size());
@@ -154,6 +166,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   Impl& impl = *impl_;
   impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
+  impl.arcTable = std::move(arcTable);
   impl.local = std::move(knots);
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
   impl.segments.reserve(impl.parts.size());
@@ -200,7 +213,7 @@ std::size_t Shape::memoryBytes() const noexcept {
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
-         impl.parts.capacity() * sizeof(detail::CurvePart) +
+         impl.parts.capacity() * sizeof(detail::CurvePart) + impl.arcTable.capacity() * sizeof(double) +
          (impl.spline ? impl.spline->points().size() * sizeof(Point2) + impl.spline->bezier().size() * sizeof(Point2) +
                             impl.spline->pieceCount() * sizeof(std::size_t)
                       : 0) +

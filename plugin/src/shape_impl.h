@@ -31,6 +31,7 @@ struct Shape::Impl {
   Profile profile;  // for a spline shape: its monotone parts' ends
   std::optional<Spline> spline;        // the curve a spline shape traces
   std::vector<detail::CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
+  std::vector<double> arcTable;          // the parts' tables of v (CurvePart::arcOffset)
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   detail::ShapeFrame frame;

@@ -66,8 +66,8 @@ inline Hit curveSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, con
   hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
   hit.normal = {float(nr * cosPhi) + 0.0f, float(nr * sinPhi) + 0.0f, float(nz) + 0.0f};
   hit.u = azimuthFraction(px, py);
-  const double along = part.length > 0.0 ? std::clamp(arcLengthTo(part.r, part.z, u) / part.length, 0.0, 1.0) : 0.0;
-  hit.v = float(part.v0 + along * part.dv);
+  const double v = hermiteAt(&shape.arcTable[part.arcOffset], part.arcSteps, u);
+  hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
   hit.segment = k;
   return hit;
 }

@@ -50,6 +50,9 @@ struct CurvePart {
   double u0, u1;        // its parameter range in that piece
   double v0, dv;        // v (normalised arc length) at its start, and its growth along it
   double length;        // its arc length
+  // Its table of v in Shape::Impl::arcTable: v and dv/du at u = k / arcSteps, k = 0 .. arcSteps,
+  // interleaved, from which a hit's v is interpolated (curve/arc_length.h).
+  std::uint32_t arcOffset, arcSteps;
 };
 
 inline namespace REVOLVE_ISA {
@@ -66,25 +69,29 @@ namespace curve_hits_internal {
 
 // Safeguarded Newton in [a, b] where eval(u, f, df) changes sign (negativeAtA: f < 0 at a): Newton
 // steps that stay in the bracket and at least halve it, bisection otherwise (Press et al.'s rtsafe).
-// Ends when the step falls below 2^-52 (u in [0, 1]: the parameter's own resolution) or f is 0.
+// Ends when the bracket or f is down to nothing, or when two Newton steps in a row predict the
+// error left after the second below 2^-53 (u in [0, 1]: the parameter's own resolution): near a
+// simple root each step is C times the previous one squared, so after a step d following d0 the
+// error is about C d^2 = d^3 / d0^2, known without another evaluation. (Near a double root the
+// steps shrink by a constant factor instead, the prediction stays large, and Newton continues.)
 template <class Eval>
 inline double safeguardedRoot(Eval&& eval, double a, double b, bool negativeAtA, double u) noexcept {
   double step = b - a, previous = step;
+  bool wasNewton = false;
   for (int iteration = 0; iteration < 100; ++iteration) {
     double f, df;
     eval(u, f, df);
     if (f == 0.0) return u;
     ((f < 0.0) == negativeAtA ? a : b) = u;
     double next = u - f / df;
-    if (!(next > a && next < b) || std::abs(2.0 * f) > std::abs(previous * df)) {
-      previous = step;
-      next = 0.5 * (a + b);
-    } else {
-      previous = step;
-    }
+    const bool newton = next > a && next < b && std::abs(2.0 * f) <= std::abs(previous * df);
+    if (!newton) next = 0.5 * (a + b);
+    previous = step;
     step = next - u;
     u = next;
-    if (std::abs(step) <= 0x1p-52 || b - a <= 0x1p-52) break;
+    if (b - a <= 0x1p-52 || std::abs(step) <= 0x1p-53) break;
+    if (newton && wasNewton && std::abs(step) * step * step <= 0x1p-53 * previous * previous) break;
+    wasNewton = newton;
   }
   return u;
 }
@@ -179,9 +186,33 @@ inline int signChanges(const Interval& interval) noexcept {
   return changes + (interval.in1 != negative);
 }
 
+// The ray's parameter at the part's point u: planeS(z(u)), unless z's rounding (8 u max |z_i|),
+// magnified by 1 / dz, could move it by more than sTolerance: then a nearly horizontal ray, whose
+// crossing of the height z(u) is ill-conditioned, is solved against the part's chord about u
+// (2^-30 of the part either side, whose sagitta is below the coordinates' rounding) by Wang's kernel, which
+// places the crossing by the radius instead; of that chord's roots, the one nearest planeS(z(u)).
+// `span`: the part's parameter range the view covers (a restriction's is narrower), so that the
+// chord is 2^-29 of the part whatever the view.
+inline double rayParameterAt(const PartView& view, double u, double span, double lo, double hi, double sTolerance) noexcept {
+  double s;
+  view.at(u, s);
+  const double zMagnitude = std::max({std::abs(view.z[0]), std::abs(view.z[1]), std::abs(view.z[2]), std::abs(view.z[3])});
+  if (!(8.0 * kUnitRoundoff * zMagnitude * std::abs(view.ray.invDz) > sTolerance)) return s;
+  const double half = 0x1p-30 / span;
+  const double u0 = std::max(0.0, u - half), u1 = std::min(1.0, u + half);
+  const Point2 a{cubicAt(view.r, u0), cubicAt(view.z, u0)}, b{cubicAt(view.r, u1), cubicAt(view.z, u1)};
+  const SegmentHits chord = segmentHits<false>(view.ray, a, b, lo, hi);
+  double best = s;
+  for (int i = 0; i < chord.count; ++i) {
+    if (i == 0 || std::abs(chord.s[i] - s) < std::abs(best - s)) best = chord.s[i];
+  }
+  return best;
+}
+
 // The roots of F on a cubic (its u mapped to uFrom + t (uTo - uFrom)) with lo <= s <= hi, nearest first.
 template <bool kFirstOnly>
-inline void isolateRoots(const PartView& view, double lo, double hi, double uFrom, double uTo, CurveHits& hits) noexcept {
+inline void isolateRoots(const PartView& view, double lo, double hi, double uFrom, double uTo, double sTolerance,
+                         CurveHits& hits) noexcept {
   Interval stack[kMaxDepth + 2];
   int top = 0;
   Interval& root = stack[top++];
@@ -199,18 +230,21 @@ inline void isolateRoots(const PartView& view, double lo, double hi, double uFro
     if (changes == 0) continue;
     if (changes == 1 || interval.depth >= kMaxDepth) {
       if (interval.in0 == interval.in1) continue;  // a tangency within rounding
-      // One root: start from the secant of the end values, then safeguarded Newton.
-      const double f0 = interval.b[0], f1 = interval.b[6];
+      // One root: start where F's control polygon crosses zero (it crosses once, and the curve
+      // follows it), then safeguarded Newton.
       double start = 0.5 * (interval.u0 + interval.u1);
-      if ((f0 < 0.0) != (f1 < 0.0) && f0 != f1) {
-        const double secant = interval.u0 + (interval.u1 - interval.u0) * (f0 / (f0 - f1));
-        if (secant > interval.u0 && secant < interval.u1) start = secant;
+      for (int k = 0; k < 6; ++k) {
+        const double p = interval.b[k], q = interval.b[k + 1];
+        if ((p < 0.0) != (q < 0.0)) {
+          const double t = (k + p / (p - q)) / 6.0;
+          const double guess = interval.u0 + (interval.u1 - interval.u0) * t;
+          if (guess > interval.u0 && guess < interval.u1) start = guess;
+          break;
+        }
       }
       const auto eval = [&](double u, double& f, double& df) { view.withDerivative(u, f, df); };
       const double u = safeguardedRoot(eval, interval.u0, interval.u1, interval.in0, start);
-      double s;
-      view.at(u, s);
-      s = std::clamp(s, sLow, sHigh);
+      const double s = std::clamp(rayParameterAt(view, u, uTo - uFrom, lo, hi, sTolerance), sLow, sHigh);
       if (s >= lo && s <= hi && hits.count < CurveHits::kMax) {
         hits.s[hits.count] = s;
         hits.u[hits.count++] = uFrom + u * (uTo - uFrom);
@@ -272,8 +306,9 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
     if (!(bracketLow <= bracketHigh)) return hits;
     hits.solved = true;
     const PartView view{ray, {part.r[0], part.r[1], part.r[2], part.r[3]}, {part.z[0], part.z[1], part.z[2], part.z[3]}};
+    const double sTolerance = 0x1p-32 * sphereRadius;  // far below the float t the caller gets
     if (std::abs(s3 - s0) <= 0x1p8 * sphereRadius || (std::min(s0, s3) >= lo && std::max(s0, s3) <= hi)) {
-      isolateRoots<kFirstOnly>(view, lo, hi, 0.0, 1.0, hits);
+      isolateRoots<kFirstOnly>(view, lo, hi, 0.0, 1.0, sTolerance, hits);
     } else {
       // A stretch far longer than the shape: restrict the part to the heights the ray has in [lo, hi],
       // widened so that the restriction's end heights, as evaluated, still lie beyond the ray's:
@@ -301,7 +336,7 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
         PartView restricted{ray, {}, {}};
         cubicRestricted(part.r, ua, ub, restricted.r);
         cubicRestricted(part.z, ua, ub, restricted.z);
-        isolateRoots<kFirstOnly>(restricted, lo, hi, ua, ub, hits);
+        isolateRoots<kFirstOnly>(restricted, lo, hi, ua, ub, sTolerance, hits);
       }
     }
   } else {
