@@ -173,6 +173,12 @@ struct Interval {
 // Halving stops at this depth (2^-44 of the part): an interval still holding two or more sign
 // changes there is a tangency within rounding, and counts as one root if its ends' signs differ.
 inline constexpr int kMaxDepth = 44;
+// And after this many halvings in all. In exact arithmetic a halving never adds sign changes
+// (Bernstein subdivision diminishes variation), so isolating F's at most 6 roots takes at most
+// 6 kMaxDepth; beyond that the coefficients' signs are rounding noise (a part far smaller than the
+// rounding of rho^2 at the shape's scale), and the intervals left count one root each where their
+// ends' signs differ, which keeps the parity.
+inline constexpr int kMaxHalvings = 6 * kMaxDepth;
 
 inline int signChanges(const Interval& interval) noexcept {
   int changes = 0;
@@ -223,12 +229,13 @@ inline void isolateRoots(const PartView& view, double lo, double hi, double uFro
   root.depth = 0;
   const bool increasing = root.s1 > root.s0;  // s grows with u: nearer halves first
   const double sLow = std::min(root.s0, root.s1), sHigh = std::max(root.s0, root.s1);
+  int halvings = 0;
   while (top > 0) {
     const Interval interval = stack[--top];
     if (std::max(interval.s0, interval.s1) < lo || std::min(interval.s0, interval.s1) > hi) continue;
     const int changes = signChanges(interval);
     if (changes == 0) continue;
-    if (changes == 1 || interval.depth >= kMaxDepth) {
+    if (changes == 1 || interval.depth >= kMaxDepth || halvings >= kMaxHalvings) {
       if (interval.in0 == interval.in1) continue;  // a tangency within rounding
       // One root: start where F's control polygon crosses zero (it crosses once, and the curve
       // follows it), then safeguarded Newton.
@@ -252,6 +259,7 @@ inline void isolateRoots(const PartView& view, double lo, double hi, double uFro
       }
       continue;
     }
+    ++halvings;
     Interval left, right;
     halveCoefficients(interval.b, left.b, right.b);
     const double middle = 0.5 * (interval.u0 + interval.u1);
