@@ -446,7 +446,10 @@ class ShadingNormals {
 // from the profile polyline in the (r, z) half-plane (law of cosines: the nearest surface point is
 // in the point's own meridian plane). So the distance to a point, and the clearance of a vertical
 // cylinder beside an upright shape, are 2-D problems, solved here exactly (up to double rounding)
-// with the MIBIT tree's meridian boxes pruning far segments.
+// with the MIBIT tree's meridian boxes pruning far segments. For a spline shape the same holds of
+// its curve: each monotone part is solved to double rounding (the depth inside a rectangle is the
+// least of four monotone functions of the curve's parameter; apart, the nearest feature is a side,
+// at a part's end or strip boundary, or a corner, at a root of a degree-5 polynomial).
 
 struct MeridianPoint {
   Point2 point;      // the closest point of the profile polyline
