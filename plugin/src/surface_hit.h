@@ -59,6 +59,9 @@ inline Hit curveSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, con
     tr = part.r[to] - part.r[from], tz = part.z[to] - part.z[from];
     if (tr == 0.0 && tz == 0.0) tr = part.r[3] - part.r[0], tz = part.z[3] - part.z[0];
   }
+  // A tangent below 2^-500 (next to a control point repeated within rounding; found by fuzzing)
+  // would square to nothing: scaled by 2^600 first, exactly.
+  if (!(std::max(std::abs(tr), std::abs(tz)) >= 0x1p-500)) tr *= 0x1p600, tz *= 0x1p600;
   const double inverse = 1.0 / std::sqrt(tr * tr + tz * tz);
   const double nr = tz * inverse, nz = -tr * inverse;  // right of the direction of travel
   Hit hit;
