@@ -15,14 +15,16 @@
 // the halving points by direct evaluation) until each holds one sign change or none. So every part
 // reports hits with the parity its shared end signs dictate, and a ray leaving a closed solid is
 // always reported hitting it. A root is placed by safeguarded Newton steps on the direct
-// evaluation, inside its sign bracket; its s is the ray's parameter at the root's height.
+// evaluation, inside its sign bracket; its s is the ray's parameter at the root's height (or, where
+// that height's rounding over dz would move s noticeably, at the root's radius: rayParameterAt).
 //
 // Conditioning: F's coefficients carry rounding of the order of u times the squared size of the
 // ray's stretch in the slab. A nearly horizontal ray crosses a slab along a stretch far longer
 // than the shape; when that stretch exceeds 2^8 R, the part is first restricted (de Casteljau) to
 // the heights the ray has within [lo, hi], and when that restriction is shorter than 2^-28 of
 // the part, its chord replaces it (the sagitta, at most 3 R (2^-28)^2, is below the rounding of the
-// coordinates) and Wang's kernel solves the chord.
+// coordinates) and Wang's kernel solves the chord. A part far below the rounding of rho^2 at the
+// shape's scale has coefficients of noise: halving is bounded (kMaxHalvings) so it ends.
 #pragma once
 
 #include "util/isa.h"
