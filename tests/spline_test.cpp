@@ -103,6 +103,17 @@ TEST(SplineTest, SelfIntersectionsAreRefused) {
               Rule::selfIntersecting, 0, "cross or touch");
 }
 
+TEST(SplineTest, CurvesRunningWithinRoundingOfThemselvesAreRefusedQuickly) {
+  // Found by fuzzing: quadratic pieces folding up and down along the axis, 1e-12 apart over much of
+  // their length (2^-39 of the extent), where sub-parts separate only when about that small: the
+  // check used to subdivide without end; it must refuse them (and end).
+  expectError(SplineKind::quadratic,
+              {{0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, -1.3642420526593924e-11},
+               {0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, 0.0},
+               {0.0, 0.500000000001819}, {0.0, 0.0625}, {0.500000000001819, 0.0}},
+              Rule::selfIntersecting, 0, "run that close for long");
+}
+
 TEST(SplineTest, NearlyTouchingPartsAndSharpCornersAreValid) {
   // A thin wall: up the outside and down the inside 1e-6 apart, a sharp rim between.
   EXPECT_NO_THROW(Spline(SplineKind::bezier,

@@ -182,8 +182,9 @@ class Spline {
   // are apart when their boxes are, or when their chords lie farther apart than the distances of
   // their control points from them (the control hull lies that close to the chord); parts that meet
   // at a join are apart when the cones from the join holding their control hulls meet only there.
-  // Parts that cannot be separated before they are 2^-40 of the extent long count as touching:
-  // a curve coming that close to itself, or folding back on itself in a cusp, is refused.
+  // Parts that cannot be separated before they are 2^-40 of the extent long, or within 2^16
+  // subdivisions of the pair, count as touching: a curve coming that close to itself (or running
+  // that close to itself for a long stretch), or folding back on itself in a cusp, is refused.
   Spline(SplineKind kind, std::span<const Point2> points);
 
   // Index and cost limits: the monotone parts (up to 5 a cubic piece) index 32-bit tree nodes.

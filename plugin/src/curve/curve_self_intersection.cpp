@@ -70,11 +70,19 @@ double hullWidth(const Sub& s) {
 
 class Checker {
  public:
-  explicit Checker(double extent) : tiny_(0x1p-40 * extent), margin_(0x1p-50 * extent) {}
+  Checker(double extent, std::size_t parts)
+      : tiny_(0x1p-40 * extent), margin_(0x1p-50 * extent), total_(kPairBudget + 256 * long(parts)) {}
+
+  // Starts a pair of parts: its budget of subdivisions, within what is left of the curve's.
+  void startPair() {
+    total_ -= pairStart_ - std::max(budget_, 0L);
+    budget_ = pairStart_ = std::min(kPairBudget, total_);
+  }
 
   // Whether two parts are apart; joinAB: a's last point is b's first and is a join of the curve;
   // joinBA likewise the other way round.
-  bool apart(const Sub& a, const Sub& b, bool joinAB, bool joinBA) const {
+  bool apart(const Sub& a, const Sub& b, bool joinAB, bool joinBA) {
+    if (--budget_ < 0) return false;
     const bool sharedAB = joinAB && a.endIsPartEnd && b.startIsPartStart;
     const bool sharedBA = joinBA && b.endIsPartEnd && a.startIsPartStart;
     if (sharedAB && sharedBA) {  // two parts closing a loop: halve one so each half meets the other once
@@ -98,8 +106,15 @@ class Checker {
   }
 
  private:
+  // Subdivisions a pair of parts may take before it counts as touching: curves running within a
+  // few 2^-40 of the extent of each other for much of their length (where only sub-parts that small
+  // separate) would take up to 2^40; a thin wall 1e-6 of the extent thick, about 10^4. The whole
+  // curve gets one pair's budget plus 256 a part (neighbours take a few each).
+  static constexpr long kPairBudget = 1 << 16;
+
   // `a` ends at the join P where `b` starts.
-  bool apartAtJoin(const Sub& a, const Sub& b) const {
+  bool apartAtJoin(const Sub& a, const Sub& b) {
+    if (--budget_ < 0) return false;
     const Point2 p = a.c[3];
     const Box boxA = boxOf(a), boxB = boxOf(b);
     // The boxes meet in a box holding P; where that box is flat in r (or z), a part that is not
@@ -136,6 +151,8 @@ class Checker {
   }
 
   double tiny_, margin_;
+  long total_;
+  long pairStart_ = 0, budget_ = 0;
 };
 
 }  // namespace
@@ -154,7 +171,7 @@ std::optional<PartPair> findCurveSelfIntersection(std::span<const MonotonePart> 
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return boxes[a].rLow < boxes[b].rLow; });
-  const Checker checker(extent);
+  Checker checker(extent, n);
   std::vector<std::size_t> active;
   for (const std::size_t i : order) {
     std::erase_if(active, [&](std::size_t j) { return boxes[j].rHigh < boxes[i].rLow; });
@@ -163,6 +180,7 @@ std::optional<PartPair> findCurveSelfIntersection(std::span<const MonotonePart> 
       const std::size_t a = std::min(i, j), b = std::max(i, j);
       const bool joinAB = b == a + 1;                    // consecutive: a's end is b's start
       const bool joinBA = loop && a == 0 && b == n - 1;  // the loop's closing join: b's end is a's start
+      checker.startPair();
       if (!checker.apart(subs[a], subs[b], joinAB, joinBA)) return PartPair{a, b};
     }
     active.push_back(i);

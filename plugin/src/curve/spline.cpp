@@ -189,7 +189,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     const std::string where = a == b ? describePiece(a) + " crosses or touches itself"
                                      : describePiece(a) + " and " + describePiece(b) + " cross or touch";
     throw ProfileError(ProfileError::Rule::selfIntersecting, pieceStart_[a],
-                       where + " (or come within 2^-40 of the extent, or fold back in a cusp); a profile must not cross or touch itself");
+                       where + " (or come within 2^-40 of the extent, run that close for long, or fold back in a cusp); a profile must not cross or touch itself");
   }
 
   const Point2 first = bezier_.front(), last = bezier_.back();
