@@ -7,7 +7,9 @@ writes OUTDIR/speed_vs_error.png (incoherent rays, rtcIntersect1), OUTDIR/speed_
 (camera rays, rtcIntersect8), OUTDIR/memory_vs_error.png, OUTDIR/scaling.png and
 OUTDIR/embree_curves.png (MIBIT, the best mesh and Embree's own curves per shape, and their scaling).
 Every point is a figure of the JSON; meshes are drawn as their whole grid with the best of them per
-error joined. Configurations a method cannot trace (their "limitation") have no figures to draw.
+error joined; the spline traced exactly is a star, its polylines (adaptive, evenly spaced) and the
+adaptive polylines' meshes are lines. Configurations a method cannot trace (their "limitation") have
+no figures to draw.
 Naming FIGUREs (speed_vs_error, speed_vs_error_camera, memory_vs_error, scaling, embree_curves)
 draws only those.
 """
@@ -30,6 +32,10 @@ STYLE = {
     "mesh": dict(color="tab:red", marker=".", label="Embree triangle mesh"),
     "embree_cone": dict(color="tab:orange", marker="P", label="Embree linear cone curve"),
     "embree_round_curve": dict(color="tab:olive", marker="*", label="Embree round Bézier curve (+ discs)"),
+    "spline": dict(color="black", marker="*", label="spline, traced exactly"),
+    "adaptive": dict(color="darkgoldenrod", marker="X", label="adaptive polyline of the spline (MIBIT)"),
+    "uniform": dict(color="tab:pink", marker="+", label="evenly spaced polyline (MIBIT)"),
+    "mesh_adaptive": dict(color="darkred", marker="d", label="mesh of the adaptive polyline"),
 }
 
 
@@ -68,6 +74,8 @@ def speed_panel(ax, shape, mode, methods=None):
             ax.scatter(*zip(*points), s=8, color=style["color"], alpha=0.35)
             best = frontier(points, lambda y, previous: y > previous)
             ax.plot(*zip(*best), color=style["color"], label=style["label"] + " (best of grid)")
+        elif method == "spline":
+            ax.scatter(*zip(*points), s=90, color=style["color"], marker=style["marker"], zorder=5, label=style["label"])
         else:
             # Joined in order of resolution: a round curve's error does not fall all the way.
             ordered = [(error, speed) for _, error, speed in sorted(configs)]
@@ -83,8 +91,8 @@ def speed_panel(ax, shape, mode, methods=None):
 
 
 def memory_panel(ax, shape):
-    lines = {"mibit": [], "embree_cone": [], "embree_round_curve": []}
-    mesh = []
+    lines = {"mibit": [], "embree_cone": [], "embree_round_curve": [], "adaptive": []}
+    mesh, spline = [], []
     for config in shape["configs"]:
         if config.get("limitation"):
             continue
@@ -93,10 +101,14 @@ def memory_panel(ax, shape):
             lines[config["method"]].append((error, config["total_bytes"]))
         elif config["method"] == "mesh":
             mesh.append((error, config["total_bytes"]))
+        elif config["method"] == "spline":
+            spline.append((error, config["total_bytes"]))
     for method, points in lines.items():
         if points:
             style = STYLE[method]
             ax.plot(*zip(*sorted(points)), color=style["color"], marker=style["marker"], ms=3, label=style["label"])
+    if spline:
+        ax.scatter(*zip(*spline), s=90, color="black", marker="*", zorder=5, label=STYLE["spline"]["label"])
     ax.scatter(*zip(*mesh), s=8, color=STYLE["mesh"]["color"], alpha=0.35)
     leanest = frontier(mesh, lambda y, previous: y < previous)
     ax.plot(*zip(*leanest), color=STYLE["mesh"]["color"], label="Embree triangle mesh (leanest of grid)")
@@ -114,7 +126,7 @@ def grid_figure(shapes, draw, ylabel, title, path):
         draw(ax, shape)
     axes[0][0].set_ylabel(ylabel)
     handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9, frameon=False)
+    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.suptitle(title)
     fig.tight_layout(rect=(0, 0.14, 1, 0.95))
     fig.savefig(path, dpi=90)

@@ -58,6 +58,7 @@ json configJson(const ConfigResult& c) {
           {"limitation", c.limitation.empty() ? json(nullptr) : json(c.limitation)},
           {"points", c.config.points},
           {"slices", c.config.slices},
+          {"tolerance", c.config.tolerance},
           {"triangles", c.triangles},
           {"build_seconds", c.buildSeconds},
           {"revolve_bytes", c.revolveBytes},
@@ -92,8 +93,18 @@ json shapeJson(const ShapeResult& shape) {
     }
     matched.push_back(entry);
   }
+  json points = json::array();
+  for (const PointsRow& row : shape.points) {
+    points.push_back({{"sample_points", row.samplePoints},
+                      {"error", row.error},
+                      {"adaptive_points", row.adaptivePoints},
+                      {"uniform_points", row.uniformPoints}});
+  }
   return {{"shape", shape.name},
           {"size", shape.size},
+          {"spline_error", shape.splineError},
+          {"spline_pieces", shape.splinePieces},
+          {"polyline_points", points},
           {"incoherent_rays", shape.incoherentRays},
           {"camera_rays", shape.cameraRays},
           {"incoherent_grazing", shape.incoherentGrazing},
@@ -174,6 +185,41 @@ void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
   }
 }
 
+// The curves: the exact spline beside MIBIT on 256 sampled points, and the points each way of
+// sampling needs for the same max error.
+void printCurves(std::FILE* out, const std::vector<ShapeResult>& shapes) {
+  std::fprintf(out, "\nExact spline against MIBIT at 256 points (Mrays/s, 1 thread; max error relative to the size)\n");
+  std::fprintf(out, "%-8s %6s %9s | %9s %8s %8s | %9s %8s %8s | %7s %7s\n", "shape", "pieces", "fit err", "spline err",
+               "inc 1", "cam 8", "mibit err", "inc 1", "cam 8", "inc", "cam 8");
+  for (const ShapeResult& shape : shapes) {
+    const ConfigResult* spline = nullptr;
+    const ConfigResult* mibit = nullptr;
+    for (const ConfigResult& c : shape.configs) {
+      if (c.config.kind == MethodKind::spline) spline = &c;
+      if (c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary && c.config.points == 256) mibit = &c;
+    }
+    if (spline == nullptr || mibit == nullptr) continue;
+    const auto speed = [](const ConfigResult* c, const char* mode) {
+      const auto it = c->speed.find(mode);
+      return it == c->speed.end() ? NAN : it->second.median;
+    };
+    std::fprintf(out, "%-8s %6zu %9.1e | %9.2e %8.3g %8.3g | %9.2e %8.3g %8.3g | %6.0f%% %6.0f%%\n", shape.name.c_str(),
+                 shape.splinePieces, shape.splineError, spline->incoherent ? spline->incoherent->residualMax : NAN,
+                 speed(spline, kIncoherent1), speed(spline, kCamera8), mibit->incoherent ? mibit->incoherent->residualMax : NAN,
+                 speed(mibit, kIncoherent1), speed(mibit, kCamera8), 100 * speed(spline, kIncoherent1) / speed(mibit, kIncoherent1),
+                 100 * speed(spline, kCamera8) / speed(mibit, kCamera8));
+  }
+  std::fprintf(out, "\nPolyline points for one max error (closed forms): one sagitta for every arc (MIBIT's ladder), "
+                    "Profile::fromCurve of the spline, even spacing along the curve\n");
+  std::fprintf(out, "%-8s %10s | %8s %9s %8s | %9s\n", "shape", "max error", "sagitta", "adaptive", "even", "adaptive/even");
+  for (const ShapeResult& shape : shapes) {
+    for (const PointsRow& row : shape.points) {
+      std::fprintf(out, "%-8s %10.2e | %8d %9d %8d | %9.2f\n", shape.name.c_str(), row.error, row.samplePoints, row.adaptivePoints,
+                   row.uniformPoints, double(row.adaptivePoints) / row.uniformPoints);
+    }
+  }
+}
+
 void printScaling(std::FILE* out, const ShapeResult& shape) {
   std::fprintf(out, "\n== scaling: %s, %zu incoherent rays, rtcIntersect1, 1 thread (Mrays/s; max error)\n", shape.name.c_str(),
                shape.incoherentRays);
@@ -207,6 +253,7 @@ std::string csvNumber(double value) {
 void printTables(std::FILE* out, const RunResults& results) {
   for (const ShapeResult& shape : results.speedError) printShape(out, shape);
   if (!results.speedError.empty()) printMatched(out, results.speedError);
+  if (!results.speedError.empty()) printCurves(out, results.speedError);
   for (const ShapeResult& shape : results.scaling) printScaling(out, shape);
 }
 

@@ -41,9 +41,21 @@ struct MatchedRow {
   std::optional<std::size_t> embreeCone, embreeRoundCurve;
 };
 
+// Points a polyline needs for one max error (relative to the size): `samplePoints` of
+// SmoothProfile::sample (one sagitta for every arc's chords), and the fewest of Profile::fromCurve
+// and of even spacing within the same error, all from closed forms.
+struct PointsRow {
+  int samplePoints = 0;
+  double error = 0;
+  int adaptivePoints = 0, uniformPoints = 0;
+};
+
 struct ShapeResult {
   std::string name;
   double size = 0;
+  double splineError = 0;        // the spline's own distance from the profile, relative to the size
+  std::size_t splinePieces = 0;  // its cubic pieces
+  std::vector<PointsRow> points;
   std::size_t incoherentRays = 0, cameraRays = 0, incoherentGrazing = 0, cameraGrazing = 0;
   std::vector<ConfigResult> configs;
   std::vector<MatchedRow> matched;
@@ -66,5 +78,8 @@ struct RunResults {
 
 // Fills ShapeResult::matched for the given error levels.
 void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels);
+// Fills ShapeResult::points.
+class SmoothProfile;
+void comparePolylinePoints(ShapeResult& shape, const SmoothProfile& profile);
 
 }  // namespace revolve::bench

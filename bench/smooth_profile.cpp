@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -221,8 +222,44 @@ std::vector<int> SmoothProfile::arcSegments(int points) const {
   return segments;
 }
 
-std::vector<Point2> SmoothProfile::sample(int points) const {
-  const std::vector<int> segments = arcSegments(points);
+std::vector<int> SmoothProfile::uniformSegments(int points) const {
+  const int budget = points - 1;
+  if (budget < int(pieces_.size())) {
+    throw std::invalid_argument(name_ + ": " + std::to_string(points) + " points cannot sample " +
+                                std::to_string(pieces_.size()) + " pieces (one segment each at least)");
+  }
+  double total = 0.0;
+  for (const ProfilePiece& piece : pieces_) total += piece.length();
+  // Largest remainders: each piece its share of the budget by length, at least one segment.
+  std::vector<int> segments(pieces_.size());
+  std::vector<std::pair<double, std::size_t>> remainders;
+  int used = 0;
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const double share = budget * pieces_[i].length() / total;
+    segments[i] = std::max(1, int(std::floor(share)));
+    used += segments[i];
+    remainders.push_back({share - std::floor(share), i});
+  }
+  std::sort(remainders.begin(), remainders.end(), std::greater<>());
+  for (std::size_t k = 0; used < budget; k = (k + 1) % remainders.size(), ++used) ++segments[remainders[k].second];
+  return segments;
+}
+
+std::vector<Point2> SmoothProfile::sampleUniform(int points) const { return polylineOf(uniformSegments(points)); }
+
+double SmoothProfile::uniformError(int points) const {
+  const std::vector<int> segments = uniformSegments(points);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const ProfilePiece& piece = pieces_[i];
+    if (piece.radius > 0.0) worst = std::max(worst, piece.radius * (1.0 - std::cos(std::abs(piece.turn) / (2.0 * segments[i]))));
+  }
+  return worst;
+}
+
+std::vector<Point2> SmoothProfile::sample(int points) const { return polylineOf(arcSegments(points)); }
+
+std::vector<Point2> SmoothProfile::polylineOf(const std::vector<int>& segments) const {
   std::vector<Point2> polyline{pieces_.front().start};
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     for (int j = 1; j <= segments[i]; ++j) polyline.push_back(pieces_[i].at(double(j) / segments[i]));

@@ -67,9 +67,16 @@ class SmoothProfile {
   std::vector<Point2> sample(int points) const;
   // The largest sagitta of sample(points): its distance from the curve, in closed form.
   double sampleError(int points) const;
+  // A polyline through `points` points spaced evenly along the curve (what sampling by hand at a
+  // fixed step gives): every join is a vertex, and each piece gets a share of the segments in
+  // proportion to its length (at least one), equal steps along it. Lines get points too.
+  std::vector<Point2> sampleUniform(int points) const;
+  double uniformError(int points) const;  // its largest sagitta, in closed form
 
  private:
-  std::vector<int> arcSegments(int points) const;  // segments per arc for sample(points)
+  std::vector<int> arcSegments(int points) const;      // segments per arc for sample(points)
+  std::vector<int> uniformSegments(int points) const;  // segments per piece for sampleUniform(points)
+  std::vector<Point2> polylineOf(const std::vector<int>& segments) const;
 
   std::string name_;
   Point2 cursor_;

@@ -2,10 +2,11 @@
 
 #include "ray_batches.h"
 #include "ray_sets.h"
+#include "smooth_spline.h"
 #include "test_shapes.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <numbers>
@@ -18,6 +19,8 @@ struct Ladders {
   std::vector<int> mibitPoints, baselinePoints, meshPoints, meshSlices;
   std::uint64_t maxTriangles;
   std::vector<int> roundSegments;  // Embree's round curve: Bézier segments
+  std::vector<double> tolerances;  // adaptive polylines, relative to the size
+  std::vector<int> uniformPoints;
 };
 
 std::vector<int> powersOfTwo(int from, int to) {
@@ -27,12 +30,14 @@ std::vector<int> powersOfTwo(int from, int to) {
 }
 
 Ladders laddersFor(const RunSettings& settings) {
-  if (settings.quick) return {{16, 64, 256}, {16, 64}, {16, 64, 256}, {16, 64, 256}, 1u << 20, {4, 16, 64}};
+  if (settings.quick) {
+    return {{16, 64, 256}, {16, 64}, {16, 64, 256}, {16, 64, 256}, 1u << 20, {4, 16, 64}, {1e-3, 1e-5}, {16, 256}};
+  }
   // Meshes up to 2^23 triangles (a 2048 x 2048 grid): past that, building the grid's largest meshes
   // takes longer than the whole rest of the run. Round curves reach their single-precision floor by
   // 16 segments (cubic arcs: error ~ theta^6); up to 1,024 shows what more of them costs.
   return {powersOfTwo(16, 4096), powersOfTwo(16, 1024), powersOfTwo(16, 4096), powersOfTwo(8, 4096), 1u << 23,
-          powersOfTwo(4, 1024)};
+          powersOfTwo(4, 1024), {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7}, powersOfTwo(16, 4096)};
 }
 
 double facetError(double rMax, int slices) { return rMax * (1.0 - std::cos(std::numbers::pi / slices)); }
@@ -67,9 +72,17 @@ class ShapeBench {
  public:
   ShapeBench(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const RunSettings& settings,
              bool withCamera)
-      : device_(device), monitor_(monitor), profile_(profile), tracer_(profile), sphere_(floorSphereFor(profile)) {
+      : device_(device),
+        monitor_(monitor),
+        profile_(profile),
+        smoothSpline_(bezierOf(profile, kSplineError * profile.size())),
+        spline_(SplineKind::bezier, smoothSpline_.bezier),
+        tracer_(profile),
+        sphere_(floorSphereFor(profile)) {
     result_.name = profile.name();
     result_.size = profile.size();
+    result_.splineError = smoothSpline_.error / profile.size();
+    result_.splinePieces = spline_.pieceCount();
     const Box box = boxOf(profile);
     rays_.incoherent = incoherentRays(box, settings.incoherentRays, settings.seed);
     rays_.incoherentReference = referenceHits(tracer_, rays_.incoherent);
@@ -94,10 +107,11 @@ class ShapeBench {
       result_.configs.push_back(std::move(refused));
       return;
     }
-    scenes_.push_back(std::make_unique<TracedScene>(device_, monitor_, profile_, config, sphere_));
+    scenes_.push_back(std::make_unique<TracedScene>(device_, monitor_, profile_, spline_, config, sphere_));
     const TracedScene& scene = *scenes_.back();
     ConfigResult result;
     result.config = config;
+    result.config.points = scene.points();
     result.buildSeconds = scene.buildSeconds();
     result.revolveBytes = scene.revolveBytes();
     result.embreeBytes = scene.embreeBytes();
@@ -125,6 +139,8 @@ class ShapeBench {
     }
   }
 
+  const Spline& spline() const { return spline_; }
+
   ShapeResult finish(Timer& timer) {
     std::fprintf(stderr, "  timing %zu jobs\n", timed_.size());
     const std::vector<Throughput> speeds = timer.run();
@@ -134,9 +150,15 @@ class ShapeBench {
   }
 
  private:
+  // The spline's own distance from the lines and arcs, relative to the size: far below what any
+  // method here resolves (float hit points carry ~6e-8 of it).
+  static constexpr double kSplineError = 1e-9;
+
   RTCDevice device_;
   const MemoryMonitor& monitor_;
   const SmoothProfile& profile_;
+  SmoothSpline smoothSpline_;
+  Spline spline_;
   ReferenceTracer tracer_;
   AnalyticSphere sphere_;
   RaySets rays_;
@@ -183,8 +205,25 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
         bench.add({MethodKind::mesh, ShellKind::cylinder, n, k}, allModes, timer);
       }
     }
+    // The curves: the spline exactly, its adaptive polylines (and their meshes, slices balancing the
+    // tolerance), and polylines of evenly spaced points.
+    const std::vector<const char*> curveModes = {kIncoherent1, kCamera8};
+    bench.add({MethodKind::spline}, allModes, timer);
+    for (double tolerance : ladders.tolerances) {
+      bench.add({MethodKind::adaptive, ShellKind::cylinder, 0, 0, false, tolerance}, curveModes, timer);
+      int k = 8;
+      while (k < 4096 && facetError(profile.rMax(), k) > tolerance * profile.size()) k *= 2;
+      const Profile polyline = Profile::fromCurve(bench.spline(), tolerance * profile.size());
+      if (2ull * polyline.segmentCount() * std::uint64_t(k) <= ladders.maxTriangles) {
+        bench.add({MethodKind::adaptiveMesh, ShellKind::cylinder, 0, k, false, tolerance}, curveModes, timer);
+      }
+    }
+    for (int n : ladders.uniformPoints) {
+      if (n > int(profile.pieces().size())) bench.add({MethodKind::uniform, ShellKind::cylinder, n}, {kIncoherent1}, timer);
+    }
     ShapeResult result = bench.finish(timer);
     matchErrorLevels(result, kErrorLevels);
+    comparePolylinePoints(result, profile);
     results.push_back(std::move(result));
   }
   return results;
@@ -219,6 +258,33 @@ std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& setting
     }
   }
   return {bench.finish(timer)};
+}
+
+void comparePolylinePoints(ShapeResult& shape, const SmoothProfile& profile) {
+  // Each reference polyline's closed-form max error, then the fewest points each other sampling
+  // needs to be within it: the adaptive polyline of the spline (its tolerance less the spline's own
+  // distance from the profile), and even spacing (the smallest count whose closed-form error fits).
+  const SmoothSpline smooth = bezierOf(profile, 1e-9 * profile.size());
+  const Spline spline(SplineKind::bezier, smooth.bezier);
+  for (const int n : {32, 64, 128, 256, 512, 1024, 2048, 4096}) {
+    if (n <= int(profile.pieces().size())) continue;
+    PointsRow row;
+    row.samplePoints = n;
+    row.error = profile.sampleError(n) / profile.size();
+    if (!(row.error > 0.0)) continue;  // no arcs: nothing to compare
+    row.adaptivePoints = int(Profile::fromCurve(spline, profile.sampleError(n) - smooth.error).points().size());
+    int low = int(profile.pieces().size()) + 1, high = 1 << 22;  // `high` is within the error
+    while (low < high) {  // the uniform error falls as points are added
+      const int middle = low + (high - low) / 2;
+      if (profile.uniformError(middle) <= profile.sampleError(n)) {
+        high = middle;
+      } else {
+        low = middle + 1;
+      }
+    }
+    row.uniformPoints = low;
+    shape.points.push_back(row);
+  }
 }
 
 void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {

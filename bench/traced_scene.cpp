@@ -3,6 +3,7 @@
 #include "round_curve.h"
 
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <variant>
 
@@ -19,15 +20,27 @@ std::string MethodConfig::method() const {
     case MethodKind::sphere: return "sphere";
     case MethodKind::embreeCone: return "embree_cone";
     case MethodKind::embreeRoundCurve: return "embree_round_curve";
+    case MethodKind::spline: return "spline";
+    case MethodKind::adaptive: return "adaptive";
+    case MethodKind::uniform: return "uniform";
+    case MethodKind::adaptiveMesh: return "mesh_adaptive";
   }
   return "?";
 }
 
 std::string MethodConfig::label() const {
-  if (kind == MethodKind::sphere) return "analytic sphere";
-  if (kind == MethodKind::mesh) return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
-  if (kind == MethodKind::embreeRoundCurve) return method() + " " + std::to_string(points) + " seg";
-  return method() + " " + std::to_string(points);
+  char tolerance[16];
+  std::snprintf(tolerance, sizeof tolerance, "%.0e", this->tolerance);
+  switch (kind) {
+    case MethodKind::sphere: return "analytic sphere";
+    case MethodKind::mesh: return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
+    case MethodKind::spline: return "spline exact";
+    case MethodKind::adaptive: return "adaptive " + std::string(tolerance) + " (" + std::to_string(points) + ")";
+    case MethodKind::adaptiveMesh:
+      return "mesh adapt " + std::string(tolerance) + " " + std::to_string(points) + "x" + std::to_string(slices);
+    case MethodKind::embreeRoundCurve: return method() + " " + std::to_string(points) + " seg";
+    default: return method() + " " + std::to_string(points);
+  }
 }
 
 std::optional<std::string> limitationOf(const SmoothProfile& profile, const MethodConfig& config) {
@@ -46,9 +59,12 @@ bool MemoryMonitor::record(void* user, ssize_t bytes, bool /*post*/) {
   return true;
 }
 
-TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile,
+TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const Spline* splineOrNull,
                          const MethodConfig& config, const AnalyticSphere& sphere)
     : config_(config), sphere_(sphere) {
+  const bool curveMethod = config.kind == MethodKind::spline || config.kind == MethodKind::adaptive ||
+                           config.kind == MethodKind::uniform || config.kind == MethodKind::adaptiveMesh;
+  if (curveMethod && splineOrNull == nullptr) throw std::invalid_argument(config.method() + " needs the profile's spline");
   const std::int64_t before = monitor.bytes();
   const auto start = std::chrono::steady_clock::now();
   scene_ = rtcNewScene(device);
@@ -65,13 +81,33 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
       attachRoundCurve(device, scene_, std::get<RoundCurveFit>(fit));
       break;
     }
-    case MethodKind::mesh: {
-      const Profile polyline(profile.sample(config.points));
+    case MethodKind::mesh:
+    case MethodKind::adaptiveMesh: {
+      const Profile polyline = config.kind == MethodKind::mesh ? Profile(profile.sample(config.points))
+                                                               : Profile::fromCurve(*splineOrNull, config.tolerance * profile.size());
       geometry = newTessellatedGeometry(device, polyline, std::uint32_t(config.slices));
       triangles_ = 2ull * polyline.segmentCount() * std::uint64_t(config.slices);
+      points_ = int(polyline.points().size());
+      break;
+    }
+    case MethodKind::spline:
+    case MethodKind::adaptive:
+    case MethodKind::uniform: {
+      if (config.kind == MethodKind::spline) {
+        shape_ = std::make_unique<Shape>(*splineOrNull);
+        points_ = int(splineOrNull->points().size());
+      } else {
+        Profile polyline = config.kind == MethodKind::adaptive ? Profile::fromCurve(*splineOrNull, config.tolerance * profile.size())
+                                                               : Profile(profile.sampleUniform(config.points));
+        points_ = int(polyline.points().size());
+        shape_ = std::make_unique<Shape>(std::move(polyline));
+      }
+      geometry_ = std::make_unique<Geometry>(device, *shape_);
+      revolveBytes_ = shape_->memoryBytes();
       break;
     }
     default: {
+      points_ = config.points;
       BuildOptions options;
       options.method = config.kind == MethodKind::linear   ? Method::linear
                        : config.kind == MethodKind::kajiya ? Method::kajiya

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the bundled scenes: patio.json, patio_points.json, still_life.json, vessels.json, many.json
-and profiles/*.csv.
+"""Writes the bundled scenes: patio.json, patio_points.json, still_life.json, spline_still_life.json,
+vessels.json, many.json and profiles/*.csv.
 
 Run from anywhere: python3 scenes/make_scenes.py. The committed files are this script's output;
 edit the script, not them. Units are metres, z is up, angles in degrees (README, "Scene format").
@@ -389,6 +389,121 @@ def still_life():
     })
 
 
+# ----------------------------------------------------------------------------------------------
+# Smooth profiles: splines (README, "Splines"), traced exactly. Each is a closed solid listed from
+# the axis at the bottom, up the outside and, for hollow vessels, back down the inside.
+
+def line_to(path, to):
+    """A straight cubic piece from the path's last point: inner points at the thirds."""
+    (r0, z0), (r1, z1) = path[-1], to
+    path += [(r0 + (r1 - r0) / 3, z0 + (z1 - z0) / 3), (r1 + (r0 - r1) / 3, z1 + (z0 - z1) / 3), to]
+
+
+def curve_to(path, c1, c2, to):
+    path += [c1, c2, to]
+
+
+def spline_vase():
+    """Catmull-Rom through the outside, a rolled lip and the inside: the curve rounds every point."""
+    outside = [(0.0, 0.0), (0.045, 0.0), (0.058, 0.012), (0.08, 0.06), (0.092, 0.12), (0.082, 0.18), (0.055, 0.23),
+               (0.036, 0.27), (0.034, 0.3), (0.042, 0.325), (0.05, 0.335)]
+    lip = [(0.049, 0.341), (0.044, 0.338)]
+    inside = [(0.037, 0.327), (0.0295, 0.3), (0.031, 0.27), (0.05, 0.23), (0.077, 0.18), (0.0865, 0.12),
+              (0.0745, 0.06), (0.052, 0.018), (0.0, 0.012)]
+    return outside + lip + inside
+
+
+def spline_wine_glass():
+    """Bezier pieces: a flat foot with a rounded edge, a stem flaring into a tulip bowl, a thin rim."""
+    p = [(0.0, 0.0)]
+    line_to(p, (0.034, 0.0))
+    curve_to(p, (0.0375, 0.0), (0.0375, 0.004), (0.034, 0.004))                  # the foot's rounded edge
+    curve_to(p, (0.012, 0.006), (0.004, 0.012), (0.0035, 0.03))                   # foot into the stem
+    line_to(p, (0.0035, 0.085))                                                    # the stem
+    curve_to(p, (0.0035, 0.1), (0.012, 0.102), (0.03, 0.112))                      # the bowl's base
+    curve_to(p, (0.05, 0.124), (0.05, 0.165), (0.038, 0.2))                        # the tulip bowl
+    curve_to(p, (0.0376, 0.2012), (0.0362, 0.2012), (0.0358, 0.2))                 # the rim
+    curve_to(p, (0.0472, 0.166), (0.0472, 0.126), (0.0285, 0.1145))                # inside, back down
+    curve_to(p, (0.014, 0.106), (0.006, 0.1045), (0.0, 0.104))
+    return p
+
+
+def spline_tumbler():
+    """Quadratic pieces: a heavy base, straight flared walls, a rounded rim."""
+    return [(0.0, 0.0), (0.028, 0.0), (0.031, 0.003), (0.0345, 0.006), (0.0345, 0.03), (0.0375, 0.06), (0.04, 0.095),
+            (0.0403, 0.0975), (0.0385, 0.0975), (0.0362, 0.06), (0.0335, 0.03), (0.033, 0.016), (0.0, 0.016)]
+
+
+def spline_jug():
+    """A natural spline through a pear-shaped outline, closed by its cap on the axis."""
+    return [(0.0, 0.0), (0.05, 0.002), (0.07, 0.03), (0.075, 0.08), (0.06, 0.13), (0.035, 0.17), (0.028, 0.21),
+            (0.034, 0.235), (0.0, 0.24)]
+
+
+def spline_bowl():
+    """Bezier: a foot ring, a wide curved wall, a rolled rim and the inside."""
+    p = [(0.0, 0.0)]
+    line_to(p, (0.035, 0.0))
+    curve_to(p, (0.04, 0.0), (0.04, 0.006), (0.045, 0.008))
+    curve_to(p, (0.09, 0.012), (0.11, 0.03), (0.115, 0.06))
+    curve_to(p, (0.1155, 0.0635), (0.1115, 0.0645), (0.111, 0.06))
+    curve_to(p, (0.104, 0.03), (0.08, 0.016), (0.035, 0.012))
+    line_to(p, (0.0, 0.012))
+    return p
+
+
+def spline_still_life():
+    """A still life of spline vessels, every profile traced exactly: render with
+    build/bin/revolve-render scenes/spline_still_life.json -o docs/spline_still_life.png"""
+    profiles = {
+        "vase": {"spline": "catmull-rom", "points": pts(spline_vase())},
+        "wine_glass": {"spline": "bezier", "points": pts(spline_wine_glass())},
+        "tumbler": {"spline": "quadratic", "points": pts(spline_tumbler())},
+        "jug": {"spline": "natural", "points": pts(spline_jug())},
+        "bowl": {"spline": "bezier", "points": pts(spline_bowl())},
+        "table": {"points": pts([(0, 0), (0.05, 0), (0.05, 0.68), (0.58, 0.70), (0.6, 0.72), (0.6, 0.75), (0, 0.75)])},
+    }
+    materials = {
+        "clear_glass": {"type": "glass", "ior": 1.5},
+        "amber_glass": {"type": "glass", "ior": 1.52, "tint": [0.92, 0.7, 0.35]},
+        "glaze": {"type": "metal", "color": [0.12, 0.28, 0.6], "roughness": 0.35},
+        "copper": {"type": "metal", "color": [0.95, 0.64, 0.54], "roughness": 0.2},
+        "porcelain": {"type": "diffuse", "color": [0.88, 0.86, 0.8]},
+        "walnut": {"type": "diffuse", "color": [0.35, 0.2, 0.1]},
+        "floor": {"type": "diffuse", "color": [0.5, 0.5, 0.5]},
+        "cream": {"type": "diffuse", "color": [0.85, 0.8, 0.7]},
+        "red": {"type": "diffuse", "color": [0.55, 0.12, 0.1]},
+    }
+    top = 0.75
+    objects = [
+        {"profile": "table", "material": "walnut", "name": "table"},
+        {"profile": "vase", "material": "glaze", "translate": [0.2, 0.2, top], "name": "vase"},
+        {"profile": "wine_glass", "material": "clear_glass", "translate": [-0.1, -0.09, top], "name": "wine glass"},
+        {"profile": "wine_glass", "material": "clear_glass", "translate": [0.01, 0.12, top], "name": "second glass"},
+        {"profile": "tumbler", "material": "amber_glass", "translate": [0.07, -0.17, top], "name": "tumbler"},
+        {"profile": "jug", "material": "copper", "translate": [-0.25, 0.17, top], "name": "jug"},
+        {"profile": "bowl", "material": "porcelain", "translate": [0.25, -0.1, top], "name": "bowl"},
+    ]
+    quads = [{"corners": [[-5, -5, 0], [5, -5, 0], [5, 5, 0], [-5, 5, 0]], "material": "floor"}]
+    for i in range(-6, 6):
+        x0, x1 = 0.25 * i, 0.25 * (i + 1)
+        quads.append({"corners": [[x0, 1.2, 0], [x1, 1.2, 0], [x1, 1.2, 2.5], [x0, 1.2, 2.5]],
+                      "material": "cream" if i % 2 == 0 else "red"})
+    dump("spline_still_life.json", {
+        "description": "Spline vessels on a table, each traced exactly: a Catmull-Rom vase, Bezier wine glasses and bowl, "
+                       "a quadratic tumbler, a natural-spline jug.",
+        "camera": {"from": [0.05, -1.3, 1.12], "to": [0.0, 0.05, 0.86], "up": [0, 0, 1], "fov": 24,
+                   "width": 640, "height": 420, "spp": 64},
+        "profiles": profiles,
+        "materials": materials,
+        "objects": objects,
+        "quads": quads,
+        "lights": [{"type": "point", "position": [-1.2, -1.0, 2.0], "intensity": [3.5, 3.3, 3.0]},
+                   {"type": "point", "position": [1.5, -0.5, 1.6], "intensity": [1.0, 1.1, 1.3]}],
+        "environment": {"color": [0.35, 0.35, 0.38]},
+    })
+
+
 def many():
     """A warehouse yard: 3,000 instances of four profiles."""
     profiles = {
@@ -481,4 +596,5 @@ if __name__ == "__main__":
     patio(points_only=True)
     still_life()
     vessels()
+    spline_still_life()
     many()

@@ -1,7 +1,9 @@
 // Every Embree path must answer what the pure C++ query answers for the same object-space ray:
 // rtcIntersect1/4/8/16 and rtcOccluded1/4/8/16 with valid masks, instances, filter functions,
 // point queries. The pure query is itself checked against independent references elsewhere.
+#include "support/curve_reference.h"
 #include "support/reference.h"
+#include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
 #include <revolve/revolve.h>
@@ -315,6 +317,55 @@ TEST(EmbreeFilterTest, IntersectionFilterRejectionFindsTheNextHit) {
     EXPECT_GT(checked, 2500u);
     EXPECT_GT(secondHits, 100u);  // the filter really did push hits further along
   }
+}
+
+TEST(EmbreeFilterTest, SplineShapesOfferEachCrossingToTheFilters) {
+  // A spline shape through the filtered paths (rtcIntersect1, rtcIntersect4 and rtcOccluded1 with
+  // a filter rejecting the lower half): the first accepted hit is the curve oracle's first with u >= 0.5.
+  std::mt19937_64 random(506);
+  const testing::NamedSpline named = testing::closedSplines()[4];  // the Catmull-Rom vase
+  const Spline spline(named.kind, named.points);
+  SingleShapeScene s{Shape(spline)};
+  s.geometry.setIntersectFilter(rejectLowerHalf);
+  s.geometry.setOcclusionFilter(rejectLowerHalf);
+  rtcCommitGeometry(s.geometry.handle());
+  rtcCommitScene(s.scene.get());
+  std::size_t checked = 0;
+  for (const Ray& ray : testing::incoherentRays(s.shape, random, 2000)) {
+    const reference::RefRay refRay{ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                                   ray.direction.z, ray.tnear, ray.tfar};
+    std::optional<long double> expected;
+    bool ambiguous = false;
+    for (const reference::RefHit& hit : reference::allCurveHits(spline.bezier(), refRay)) {
+      const long double y = refRay.oy + hit.t * refRay.dy, x = refRay.ox + hit.t * refRay.dx;
+      if (std::abs(y) < 1e-4L * std::abs(x) + 1e-6L) ambiguous = true;
+      if (std::atan2(y, x) >= 0 || y == 0) continue;  // u < 0.5: rejected
+      expected = hit.t;
+      break;
+    }
+    if (ambiguous) continue;
+    ++checked;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = toRayHit(ray);
+    rtcIntersect1(s.scene.get(), &context, &rh);
+    ASSERT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, expected.has_value());
+    if (expected) EXPECT_NEAR(rh.ray.tfar, double(*expected), 1e-5 * (1.0 + double(*expected)));
+    // The same ray in lane 2 of a packet of four, the other lanes off.
+    alignas(16) int valid[4] = {0, 0, -1, 0};
+    alignas(16) RTCRayHit4 packet{};
+    packet.ray.org_x[2] = ray.origin.x, packet.ray.org_y[2] = ray.origin.y, packet.ray.org_z[2] = ray.origin.z;
+    packet.ray.dir_x[2] = ray.direction.x, packet.ray.dir_y[2] = ray.direction.y, packet.ray.dir_z[2] = ray.direction.z;
+    packet.ray.tnear[2] = ray.tnear, packet.ray.tfar[2] = ray.tfar, packet.ray.mask[2] = ~0u;
+    packet.hit.geomID[2] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect4(valid, s.scene.get(), &context, &packet);
+    EXPECT_EQ(packet.hit.geomID[2], rh.hit.geomID);
+    EXPECT_EQ(packet.ray.tfar[2], rh.ray.tfar);
+    RTCRay shadow = toRayHit(ray).ray;
+    rtcOccluded1(s.scene.get(), &context, &shadow);
+    EXPECT_EQ(shadow.tfar == -INFINITY, expected.has_value());
+  }
+  EXPECT_GT(checked, 1500u);
 }
 
 TEST(EmbreeFilterTest, OcclusionFilterIsHonoured) {

@@ -1,6 +1,7 @@
 // The per-ray code is compiled once per instruction set (src/util/isa.h): every copy must give the
 // same answers bit for bit, whichever one the CPU picks.
 #include "isa/query_kernels.h"
+#include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
 #include <gtest/gtest.h>
@@ -41,6 +42,34 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
                     sameBits(a->normal.z, b->normal.z))
             << named.name << ": t " << a->t << " vs " << b->t;
       }
+    }
+  }
+  EXPECT_GT(hits, 10000u);
+}
+
+TEST(IsaTest, SplineShapesGiveTheSameHitsBitForBit) {
+  const detail::QueryKernels* baseline = detail::queryKernelsFor(detail::Isa::sse2);
+  const detail::QueryKernels* avx2 = detail::queryKernelsFor(detail::Isa::avx2);
+  ASSERT_NE(baseline, nullptr);
+  if (avx2 == nullptr) GTEST_SKIP() << "this CPU has no AVX2: only the baseline copy runs here";
+  std::mt19937_64 random(20241);
+  std::size_t hits = 0;
+  for (const testing::NamedSpline& named : testing::closedSplines()) {
+    const Shape shape(Spline(named.kind, named.points));
+    std::vector<Ray> rays = testing::incoherentRays(shape, random, 2000);
+    const std::vector<Ray> awkward = testing::axisAlignedRays(shape, random, 500);
+    rays.insert(rays.end(), awkward.begin(), awkward.end());
+    for (const Ray& ray : rays) {
+      const std::optional<Hit> a = baseline->intersect(shape.impl(), ray, nullptr);
+      const std::optional<Hit> b = avx2->intersect(shape.impl(), ray, nullptr);
+      ASSERT_EQ(a.has_value(), b.has_value()) << named.name;
+      ASSERT_EQ(baseline->occluded(shape.impl(), ray, nullptr), avx2->occluded(shape.impl(), ray, nullptr)) << named.name;
+      if (!a) continue;
+      ++hits;
+      ASSERT_TRUE(sameBits(a->t, b->t) && sameBits(a->u, b->u) && sameBits(a->v, b->v) && a->segment == b->segment &&
+                  sameBits(a->normal.x, b->normal.x) && sameBits(a->normal.y, b->normal.y) &&
+                  sameBits(a->normal.z, b->normal.z))
+          << named.name << ": t " << a->t << " vs " << b->t;
     }
   }
   EXPECT_GT(hits, 10000u);

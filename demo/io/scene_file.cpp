@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -73,36 +74,29 @@ SceneCamera readCamera(const Reader& in, const Json& json) {
   return camera;
 }
 
-SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
-                         const std::string& directory) {
-  in.object(json, path, {"points", "csv", "crease"});
+// The profile's points as read, with where each came from for messages: an element of "points",
+// or a line of a CSV file.
+struct ProfileSource {
+  std::vector<Point2> points;
+  std::function<std::string(std::size_t)> where;  // the key path or "file:line" of point i
+  std::string path;                               // the key path of the points (or the csv key)
+  std::string file;                               // the CSV as opened; empty for inline points
+};
+
+ProfileSource readPoints(const Reader& in, const Json& json, const std::string& path, const std::string& directory) {
   const Json* points = in.optional(json, "points");
   const Json* csv = in.optional(json, "csv");
   if ((points != nullptr) == (csv != nullptr)) in.fail(path, "needs exactly one of \"points\" or \"csv\"");
-  double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;
-  if (const Json* crease = in.optional(json, "crease")) {
-    creaseDegrees = in.numberIn(*crease, child(path, "crease"), 0, 180, "a crease angle lies in [0, 180] degrees");
-  }
-  std::optional<Profile> built;
-  std::vector<std::string> warnings;
   if (points != nullptr) {
     const std::string pointsPath = child(path, "points");
     in.array(*points, pointsPath);
-    std::vector<Point2> values;
+    ProfileSource source{{}, [pointsPath](std::size_t i) { return element(pointsPath, i); }, pointsPath, {}};
     for (std::size_t i = 0; i < points->size(); ++i) {
       const Json& point = (*points)[i];
       if (!point.is_array() || point.size() != 2) in.fail(element(pointsPath, i), "expected a point [r, z]");
-      values.push_back({in.number(point[0], element(pointsPath, i) + "[0]"), in.number(point[1], element(pointsPath, i) + "[1]")});
+      source.points.push_back({in.number(point[0], element(pointsPath, i) + "[0]"), in.number(point[1], element(pointsPath, i) + "[1]")});
     }
-    try {
-      built.emplace(values);
-    } catch (const ProfileError& error) {
-      in.fail(error.index() < values.size() ? element(pointsPath, error.index()) : pointsPath, error.what());
-    }
-    for (const ProfileWarning& warning : built->warnings()) {
-      warnings.push_back(in.file() + ": " + element(pointsPath, warning.index) + ": " + warning.message);
-    }
-    return {name, std::move(*built), creaseDegrees, std::move(warnings), {}};
+    return source;
   }
   const std::string csvPath = child(path, "csv");
   const std::string relative = in.string(*csv, csvPath);
@@ -114,16 +108,74 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   } catch (const InputError& error) {  // "file:line: problem", the line's text already made printable
     in.fail(csvPath, error.what());
   }
+  std::vector<std::size_t> lines = csvPoints.lines;
+  return {std::move(csvPoints.points),
+          [file, lines](std::size_t i) { return file + ":" + std::to_string(i < lines.size() ? lines[i] : 0); }, csvPath, file};
+}
+
+SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
+                         const std::string& directory) {
+  in.object(json, path, {"points", "csv", "crease", "spline", "tolerance"});
+  double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;
+  if (const Json* crease = in.optional(json, "crease")) {
+    creaseDegrees = in.numberIn(*crease, child(path, "crease"), 0, 180, "a crease angle lies in [0, 180] degrees");
+  }
+  SplineKind kind = SplineKind::linear;
+  if (const Json* spline = in.optional(json, "spline")) {
+    const std::string text = in.string(*spline, child(path, "spline"));
+    const std::optional<SplineKind> named = splineKindNamed(text);
+    if (!named) {
+      in.fail(child(path, "spline"), "unknown spline kind " + quotedText(text) + "; expected one of: linear, quadratic, bezier, catmull-rom, natural");
+    }
+    kind = *named;
+  }
+  const std::string tolerancePath = child(path, "tolerance");
+  double tolerance = 0;
+  if (const Json* value = in.optional(json, "tolerance")) {
+    tolerance = in.number(*value, tolerancePath);
+    if (kind == SplineKind::linear) {
+      in.fail(tolerancePath, "applies to a curved \"spline\" (quadratic, bezier, catmull-rom or natural) only; a polyline is traced as it is");
+    }
+    if (!(tolerance > 0)) in.fail(tolerancePath, json::numberText(tolerance) + " is out of range: a tolerance is > 0");
+  }
+  const ProfileSource source = readPoints(in, json, path, directory);
+  const auto failAt = [&](const ProfileError& error) {
+    if (error.index() >= source.points.size()) in.fail(source.path, error.what());
+    // Points are named by their key path; a CSV's by its file and line, under the csv key.
+    const std::string where = source.where(error.index());
+    if (where.rfind(source.path, 0) == 0) in.fail(where, error.what());
+    in.fail(source.path, where + ": " + error.what());
+  };
+  std::vector<std::string> warnings;
+  if (kind == SplineKind::linear) {
+    std::optional<Profile> built;
+    try {
+      built.emplace(source.points);
+    } catch (const ProfileError& error) {
+      failAt(error);
+    }
+    for (const ProfileWarning& warning : built->warnings()) {
+      const std::string where = source.where(warning.index);
+      warnings.push_back((where.rfind(source.path, 0) == 0 ? in.file() + ": " : "") + where + ": " + warning.message);
+    }
+    return {name, std::move(*built), creaseDegrees, std::move(warnings), source.file, std::nullopt, 0};
+  }
+  std::optional<Spline> spline;
   try {
-    built.emplace(csvPoints.points);
+    spline.emplace(kind, source.points);
   } catch (const ProfileError& error) {
-    const std::size_t line = error.index() < csvPoints.lines.size() ? csvPoints.lines[error.index()] : 0;
-    in.fail(csvPath, InputError(file, line, error.what()).what());
+    failAt(error);
   }
-  for (const ProfileWarning& warning : built->warnings()) {
-    warnings.push_back(InputError(file, csvPoints.lines[warning.index], warning.message).what());
+  double size = 0;
+  for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+  std::optional<Profile> polyline;
+  try {
+    polyline.emplace(Profile::fromCurve(*spline, tolerance > 0 ? tolerance : SceneProfile::kDrawingFraction * size));
+  } catch (const std::invalid_argument& error) {  // ProfileError too: the polyline crosses itself
+    in.fail(tolerance > 0 ? tolerancePath : child(path, "spline"), error.what());
   }
-  return {name, std::move(*built), creaseDegrees, std::move(warnings), file};
+  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance};
+  return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::move(spline), 0};
 }
 
 SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json& json, const std::string& path) {

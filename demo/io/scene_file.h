@@ -38,11 +38,21 @@ struct SceneCamera {
 };
 
 struct SceneProfile {
+  // The fraction of a spline's size (its largest coordinate) within which `profile` follows a
+  // curve traced exactly: fine enough that the tools drawing or meshing it do not show it.
+  static constexpr double kDrawingFraction = 1e-5;
+
   std::string name;
+  // The polyline: the points of a linear profile; for a spline with a "tolerance", the curve as
+  // Profile::fromCurve samples it within that tolerance (what is traced); for a spline traced
+  // exactly, the curve sampled within kDrawingFraction of its size, for the tools that need a
+  // polyline (meshes, plots).
   Profile profile;
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
   std::vector<std::string> warnings;  // "where: message" for each point the Profile dropped
   std::string csvFile;  // the CSV it was read from, as opened; empty for inline points
+  std::optional<Spline> spline;  // a curved "spline" without a "tolerance": traced exactly
+  double tolerance = 0;          // the "tolerance" given, or 0
 };
 
 enum class MaterialType { diffuse, metal, mirror, glass };

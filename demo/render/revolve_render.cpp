@@ -4,6 +4,7 @@
 // format are documented in README.md.
 #include "common/command_line.h"
 #include "common/memory_check.h"
+#include "curve_tolerance.h"
 #include "glass_checks.h"
 #include "image_output.h"
 #include "io/output_set.h"
@@ -33,7 +34,7 @@ namespace {
 using namespace revolve;
 
 struct Options {
-  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick, exportPov;
+  std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick, exportPov, tolerance;
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -56,7 +57,7 @@ scene::BuildSettings buildSettings(const Options& options) {
 }
 
 void writeStats(io::OutputSet& outputs, const Options& options, const render::RenderSettings& settings, const scene::EmbreeScene& built,
-                const render::RenderResult& result, std::size_t objects) {
+                const render::RenderResult& result, std::size_t objects, const std::vector<render::CurvePolyline>& curves) {
   const std::uint64_t total = result.rays.camera + result.rays.bounce + result.rays.shadow;
   const Stats mibit = built.stats();
   nlohmann::ordered_json json;
@@ -82,6 +83,12 @@ void writeStats(io::OutputSet& outputs, const Options& options, const render::Re
                    {"quadratics", mibit.quadratics}};
   json["memory"] = {{"revolve_bytes", built.revolveBytes()}, {"embree_bytes", built.embreeBytes()},
                     {"embree_peak_bytes", built.embreePeakBytes()}};
+  if (!options.tolerance.empty()) {
+    json["tolerance"] = options.tolerance;
+    nlohmann::ordered_json polylines = nlohmann::ordered_json::array();
+    for (const render::CurvePolyline& c : curves) polylines.push_back({{"profile", c.profile}, {"tolerance", c.tolerance}, {"points", c.points}});
+    json["curves_as_polylines"] = polylines;
+  }
   const std::string text = json.dump(2) + "\n";
   outputs.write(options.stats, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
 }
@@ -176,7 +183,9 @@ void run(const Options& options) {
     throw std::runtime_error("--stats: --export-pov without -o renders nothing to report; add -o to render as well");
   }
   if (renders) render::imageFormatFor(output);  // an unknown extension fails before any work
-  const io::SceneDescription description = readScene(options);
+  std::optional<render::CurveTolerance> tolerance;
+  if (!options.tolerance.empty()) tolerance = render::parseCurveTolerance(options.tolerance);
+  io::SceneDescription description = readScene(options);
   if (renders) {
     for (const std::string& warning : render::glassWarnings(description)) {
       std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
@@ -212,6 +221,8 @@ void run(const Options& options) {
   app::requireMemory(36.0 * settings.width * settings.height,
                      "an image of " + std::to_string(settings.width) + " x " + std::to_string(settings.height) + " pixels");
 
+  std::vector<render::CurvePolyline> curves;
+  if (tolerance) curves = render::applyCurveTolerance(description, *tolerance, settings.height);
   const scene::EmbreeScene built(description, buildSettings(options));
   render::ProgressReport progress;
   const render::RenderResult result =
@@ -225,7 +236,7 @@ void run(const Options& options) {
   const float scale = float(std::exp2(options.exposure));
   for (float& value : image.pixels) value *= scale;
   render::writeImage(outputs.temporary(output), output, image);
-  if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size());
+  if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size(), curves);
   outputs.commit();
 }
 
@@ -274,6 +285,10 @@ int main(int argc, char** argv) {
   app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 16))
       ->capture_default_str();
+  app.add_option("--tolerance", options.tolerance,
+                 "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
+                 "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile")
+      ->check(app::kNonEmpty);
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))

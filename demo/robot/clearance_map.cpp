@@ -56,7 +56,8 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
   std::vector<const Shape*> shapeOf(scene.profiles.size(), nullptr);
   for (const io::SceneObject& object : scene.objects) {
     if (shapeOf[object.profile] == nullptr) {
-      shapes_.push_back(std::make_unique<Shape>(scene.profiles[object.profile].profile));
+      const io::SceneProfile& profile = scene.profiles[object.profile];
+      shapes_.push_back(profile.spline ? std::make_unique<Shape>(*profile.spline) : std::make_unique<Shape>(profile.profile));
       shapeOf[object.profile] = shapes_.back().get();
     }
   }

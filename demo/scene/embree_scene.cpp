@@ -150,6 +150,10 @@ struct EmbreeScene::Prototype {
     } else if (settings.embreeCone) {
       cone.emplace(device, profile);
       rtcAttachGeometry(scene.get(), cone->handle());
+    } else if (source.spline) {
+      shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
+      geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
+      rtcAttachGeometry(scene.get(), geometry->handle());
     } else {
       shape.emplace(profile, settings.options);
       geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
@@ -381,7 +385,9 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     hit.exactSurface = true;
     hit.point = ray.origin + hit.t * ray.direction;
     objectNormal = {rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
-    shadingNormal = prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
+    // A curve's geometric normal is smooth already; a polyline's is interpolated between vertices.
+    shadingNormal = prototype.shape->spline() != nullptr ? objectNormal
+                                                         : prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
     const Vec3 magnitude = app::absolute(ray.origin) + app::absolute(instance.translate) + app::absolute(hit.t * ray.direction);
     hit.transformError = instance.transformErrorFactor * app::maxComponent(magnitude);
   } else {

@@ -30,23 +30,46 @@ using namespace revolve;
 
 struct Options {
   std::string profile, rays, out;
-  std::string method = "mibit", shell = "cylinder";
+  std::string method = "mibit", shell = "cylinder", spline = "linear";
   std::uint32_t subdivisions = 0;
   std::uint32_t slices = 64;
+  double tolerance = 0;
 };
 
-// The profile, with a ProfileError or warning pointed at the file line of the point concerned.
-Profile loadProfile(const std::string& path) {
+// What is traced: the polyline, and the curve when it is traced exactly.
+struct LoadedProfile {
+  Profile polyline;
+  std::optional<Spline> curve;
+};
+
+// The profile (or spline), with a ProfileError or warning pointed at the file line of the point
+// concerned. A curve traced exactly keeps a polyline within 1e-5 of its size for --method mesh.
+LoadedProfile loadProfile(const Options& options) {
+  const std::string& path = options.profile;
   const io::ProfileFile file = io::readProfileCsv(path);
+  const SplineKind kind = *splineKindNamed(options.spline);
+  if (options.tolerance > 0 && kind == SplineKind::linear) {
+    throw std::runtime_error("--tolerance applies to a curved --spline (quadratic, bezier, catmull-rom or natural) only");
+  }
   try {
-    Profile profile(file.points);
-    for (const ProfileWarning& warning : profile.warnings()) {
-      std::fprintf(stderr, "%s:%zu: warning: %s\n", path.c_str(), file.lines[warning.index], warning.message.c_str());
+    if (kind == SplineKind::linear) {
+      Profile profile(file.points);
+      for (const ProfileWarning& warning : profile.warnings()) {
+        std::fprintf(stderr, "%s:%zu: warning: %s\n", path.c_str(), file.lines[warning.index], warning.message.c_str());
+      }
+      return {std::move(profile), std::nullopt};
     }
-    return profile;
+    Spline spline(kind, file.points);
+    double size = 0;
+    for (const Point2& p : spline.bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+    Profile polyline = Profile::fromCurve(spline, options.tolerance > 0 ? options.tolerance : 1e-5 * size);
+    if (options.tolerance > 0) return {std::move(polyline), std::nullopt};
+    return {std::move(polyline), std::move(spline)};
   } catch (const ProfileError& error) {
     const std::size_t line = error.index() < file.lines.size() ? file.lines[error.index()] : 0;
     throw io::InputError(path, line, error.what());
+  } catch (const std::invalid_argument& error) {  // the tolerance, for this curve
+    throw std::runtime_error(std::string("--tolerance: ") + error.what());
   }
 }
 
@@ -112,7 +135,8 @@ BuildOptions buildOptions(const Options& options) {
 }
 
 void run(const Options& options) {
-  const Profile profile = loadProfile(options.profile);
+  const LoadedProfile loaded = loadProfile(options);
+  const Profile& profile = loaded.polyline;
   const std::vector<Ray> rays = io::readRaysCsv(options.rays);
   io::OutputSet outputs;
   outputs.addInput("the profile file (--profile)", options.profile);
@@ -130,7 +154,11 @@ void run(const Options& options) {
     rtcAttachGeometry(scene.get(), triangles);
     rtcReleaseGeometry(triangles);
   } else {
-    shape.emplace(profile, buildOptions(options));
+    if (loaded.curve) {
+      shape.emplace(*loaded.curve, buildOptions(options));
+    } else {
+      shape.emplace(profile, buildOptions(options));
+    }
     geometry.emplace(device.get(), *shape);
     rtcAttachGeometry(scene.get(), geometry->handle());
   }
@@ -173,6 +201,14 @@ int main(int argc, char** argv) {
                  "MIBIT leaves per monotone interval (0: one segment per leaf)")
       ->check(app::wholeNumberIn<std::uint32_t>(0, UINT32_MAX))
       ->capture_default_str();
+  app.add_option("--spline", options.spline,
+                 "how the profile's points make a curve: linear (a polyline), quadratic (2n + 1 Bezier points), bezier "
+                 "(3n + 1), catmull-rom or natural (through every point); curves are traced exactly")
+      ->check(CLI::IsMember({"linear", "quadratic", "bezier", "catmull-rom", "natural"}))
+      ->capture_default_str();
+  app.add_option("--tolerance", options.tolerance,
+                 "trace a curved --spline as its polyline within this distance (Profile::fromCurve) instead of exactly")
+      ->check(CLI::PositiveNumber);
   app.add_option("--slices", options.slices, "azimuthal steps of the tessellated mesh (--method mesh)")
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 24))
       ->capture_default_str();

@@ -2,6 +2,7 @@
 // axis-aligned rectangle (a vertical cylinder beside an upright shape, seen in the meridian plane;
 // a point when degenerate) to the profile polyline. Each segment is solved in closed form; the
 // MIBIT tree's meridian boxes give lower bounds that skip far runs of the profile, best first.
+#include "curve/part_distance.h"
 #include "mibit/best_first.h"
 #include "shape_impl.h"
 
@@ -124,7 +125,17 @@ class ClearanceSearch {
   }
 
   void visit(std::uint32_t k) {
-    const Candidate c = segmentMinimum(rect_, scaled(k), scaled(k + 1));
+    Candidate c;
+    if (shape_.curved()) {
+      // A spline's part, scaled as the profile is (monotone still; z's direction may flip).
+      const detail::CurvePart& part = shape_.parts[k];
+      double r[4], z[4];
+      for (int i = 0; i < 4; ++i) r[i] = part.r[i] * radial_, z[i] = part.z[i] * axial_;
+      const detail::PartMinimum m = detail::partMinimum({rect_.rLow, rect_.rHigh, rect_.zLow, rect_.zHigh}, r, z);
+      c = {m.value, m.r, m.z};
+    } else {
+      c = segmentMinimum(rect_, scaled(k), scaled(k + 1));
+    }
     if (c.value < best_.value) best_ = c, segment_ = k;
   }
 

@@ -1,5 +1,6 @@
 // The queries that need no Embree: nearest hit and any hit (per instruction set, see
 // isa/query_kernels.h), closest point.
+#include "curve/part_distance.h"
 #include "isa/query_kernels.h"
 #include "mibit/best_first.h"
 #include "queries.h"
@@ -37,6 +38,12 @@ class ClosestSegment {
 
  private:
   void visit(std::uint32_t k) {
+    if (shape_.curved()) {
+      const detail::CurvePart& part = shape_.parts[k];
+      const detail::PartMinimum m = detail::partMinimum({rho_, rho_, z_, z_}, part.r, part.z);
+      if (m.value * m.value < best2_) best2_ = m.value * m.value, segment_ = k, point_ = {m.r, m.z};
+      return;
+    }
     const Point2 a = shape_.local[k], b = shape_.local[k + 1];
     const double er = b.r - a.r, ez = b.z - a.z;
     const double along = std::clamp(((rho_ - a.r) * er + (z_ - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);

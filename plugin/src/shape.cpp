@@ -1,10 +1,13 @@
 // Building a Shape: the local frame, the bounding sphere and box, and the search structures.
+#include "curve/arc_table.h"
+#include "curve/monotone_parts.h"
 #include "shape_impl.h"
 #include "util/rounding.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace revolve {
 namespace {
@@ -20,6 +23,33 @@ Bounds paddedBounds(double rMax, double zMin, double zMax) {
   const double pad = std::ldexp(magnitude, -12);
   const float r = detail::floatAbove(rMax + pad);
   return {{-r, -r, detail::floatBelow(zMin - pad)}, {r, r, detail::floatAbove(zMax + pad)}};
+}
+
+// The search structures over the local points (a polyline's, or a spline's monotone parts' ends).
+void buildSearch(Shape::Impl& impl, const BuildOptions& options, std::span<const Point2> innerControls) {
+  impl.mibit = detail::buildMibitTree(impl.local, options, innerControls);
+  // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
+  // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
+  // Its float filter needs R^2 well inside float's range (mibit/wide_search.h).
+  const double R = impl.frame.sphereRadius;
+  if (options.method == Method::mibit && options.wideNodes && options.shell == ShellKind::cylinder &&
+      options.monotoneSplit && options.rangeSearch && options.subdivisions == 0 && R >= 0x1p-50 && R <= 0x1p50) {
+    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
+  }
+  if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+}
+
+// A part whose inner control points lie within a few roundings of its chord (2^-50 of the
+// curve's extent) is that chord, to the coordinates' precision; a horizontal one is an annulus.
+bool isStraight(const detail::MonotonePart& part, double extent) {
+  const Point2 a = part.c[0], b = part.c[3];
+  if (a.z == b.z) return true;  // monotone in z with equal ends: horizontal throughout
+  const double er = b.r - a.r, ez = b.z - a.z, length = std::hypot(er, ez);
+  for (int i = 1; i < 3; ++i) {
+    const double across = std::abs((part.c[i].r - a.r) * ez - (part.c[i].z - a.z) * er) / length;
+    if (!(across <= 0x1p-50 * extent)) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -63,16 +93,90 @@ Shape::Shape(Profile profile, const BuildOptions& options)
                              (arc[k + 1] - arc[k]) / arc.back()});
   }
 
-  impl.mibit = detail::buildMibitTree(impl.local, options);
-  // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
-  // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
-  // Its float filter needs R^2 well inside float's range (mibit/wide_search.h).
-  const double R = impl.frame.sphereRadius;
-  if (options.method == Method::mibit && options.wideNodes && options.shell == ShellKind::cylinder &&
-      options.monotoneSplit && options.rangeSearch && options.subdivisions == 0 && R >= 0x1p-50 && R <= 0x1p50) {
-    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
+  buildSearch(impl, options, {});
+  impl.bounds = paddedBounds(rMax, zMin, zMax);
+}
+
+Shape::Shape(Spline curve, const BuildOptions& options) {
+  if (curve.kind() == SplineKind::linear) {
+    *this = Shape(Profile(curve.points()), options);
+    return;
   }
-  if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+  if (options.method == Method::kajiya) {
+    throw std::invalid_argument("Kajiya's strip tree bounds polylines only: a spline shape takes Method::mibit or Method::linear");
+  }
+  double extent = 0.0;
+  for (const Point2& p : curve.bezier()) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
+  const std::vector<detail::MonotonePart> parts = detail::monotoneParts(curve.bezier(), extent);
+
+  // Each monotone part lies in the box of its ends: the knots bound the curve.
+  double zMin = parts[0].c[0].z, zMax = zMin, rMax = 0.0;
+  for (const detail::MonotonePart& part : parts) {
+    for (const Point2& p : {part.c[0], part.c[3]}) {
+      zMin = std::min(zMin, p.z);
+      zMax = std::max(zMax, p.z);
+      rMax = std::max(rMax, p.r);
+    }
+  }
+  const double zCentre = 0.5 * zMin + 0.5 * zMax;
+  // The bounding sphere holds every control point (the curve lies in their hull), so the kernel's
+  // rounding bounds, scaled by its radius, hold for the control values the leaves compute with.
+  double radius = 0.0;
+  std::vector<detail::CurvePart> local;
+  std::vector<Point2> knots{{parts[0].c[0].r, parts[0].c[0].z - zCentre}}, inner;
+  std::vector<double> arc{0.0}, arcTable;
+  local.reserve(parts.size());
+  for (const detail::MonotonePart& part : parts) {
+    detail::CurvePart c{};
+    for (int i = 0; i < 4; ++i) {
+      c.r[i] = part.c[i].r;
+      c.z[i] = part.c[i].z - zCentre;
+      radius = std::max(radius, std::hypot(c.r[i], c.z[i]));
+    }
+    c.straight = isStraight(part, extent);
+    c.piece = part.piece;
+    c.u0 = part.u0;
+    c.u1 = part.u1;
+    // Its length and its table of arc length (normalised to v below).
+    detail::ArcTable table = detail::arcTableOf(c.r, c.z);
+    c.length = table.length;
+    c.arcOffset = std::uint32_t(arcTable.size());
+    c.arcSteps = table.steps;
+    arcTable.insert(arcTable.end(), table.interleaved.begin(), table.interleaved.end());
+    knots.push_back({c.r[3], c.z[3]});
+    inner.push_back({c.r[1], c.z[1]});
+    inner.push_back({c.r[2], c.z[2]});
+    arc.push_back(arc.back() + c.length);
+    local.push_back(c);
+  }
+  const double total = arc.back();
+  for (std::size_t k = 0; k < local.size(); ++k) {
+    detail::CurvePart& c = local[k];
+    c.v0 = arc[k] / total;
+    c.dv = c.length / total;
+    double* entry = &arcTable[c.arcOffset];
+    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
+    entry[2 * c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
+  }
+
+  std::vector<Point2> global;
+  global.reserve(knots.size());
+  for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
+  impl_ = std::make_unique<Impl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()), options);
+  Impl& impl = *impl_;
+  impl.spline.emplace(std::move(curve));
+  impl.parts = std::move(local);
+  impl.arcTable = std::move(arcTable);
+  impl.local = std::move(knots);
+  impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
+  impl.segments.reserve(impl.parts.size());
+  for (std::size_t k = 0; k < impl.parts.size(); ++k) {
+    // The chord's frame: what a straight part's hit needs (as a segment's); v from the curve's length.
+    const Point2 a = impl.local[k], b = impl.local[k + 1];
+    const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez, length = std::sqrt(length2);
+    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, impl.parts[k].v0, impl.parts[k].dv});
+  }
+  buildSearch(impl, options, inner);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
 
@@ -81,6 +185,8 @@ Shape::Shape(Shape&&) noexcept = default;
 Shape& Shape::operator=(Shape&&) noexcept = default;
 
 const Profile& Shape::profile() const noexcept { return impl_->profile; }
+const Spline* Shape::spline() const noexcept { return impl_->spline ? &*impl_->spline : nullptr; }
+std::uint32_t Shape::splinePiece(std::uint32_t segment) const noexcept { return impl_->parts[segment].piece; }
 const BuildOptions& Shape::options() const noexcept { return impl_->options; }
 Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 
@@ -107,6 +213,10 @@ std::size_t Shape::memoryBytes() const noexcept {
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
+         impl.parts.capacity() * sizeof(detail::CurvePart) + impl.arcTable.capacity() * sizeof(double) +
+         (impl.spline ? impl.spline->points().size() * sizeof(Point2) + impl.spline->bezier().size() * sizeof(Point2) +
+                            impl.spline->pieceCount() * sizeof(std::size_t)
+                      : 0) +
          impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
 }
 

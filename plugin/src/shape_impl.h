@@ -4,10 +4,12 @@
 #include <revolve/revolve.h>
 
 #include "kajiya/strip_tree.h"
+#include "kernel/curve_hits.h"
 #include "kernel/meridian_ray.h"
 #include "mibit/mibit_tree.h"
 #include "mibit/wide_tree.h"
 
+#include <optional>
 #include <vector>
 
 namespace revolve {
@@ -26,7 +28,11 @@ struct SegmentFrame {
 struct Shape::Impl {
   Impl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
 
-  Profile profile;
+  Profile profile;  // for a spline shape: its monotone parts' ends
+  std::optional<Spline> spline;        // the curve a spline shape traces
+  std::vector<detail::CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
+  std::vector<double> arcTable;          // the parts' tables of v (CurvePart::arcOffset)
+  bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   detail::ShapeFrame frame;
   std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)

@@ -8,6 +8,7 @@
 #include "util/isa.h"
 
 #include "kajiya/strip_search.h"
+#include "kernel/curve_hits.h"
 #include "kernel/segment_hits.h"
 #include "mibit/mibit_search.h"
 #include "mibit/wide_search.h"
@@ -49,8 +50,28 @@ inline SegmentHits hitsOfSegment(const Shape::Impl& shape, const MeridianRay& ra
   return hits;
 }
 
-// The nearest hit: (s, segment), ties to the lower segment.
-template <bool kCount>
+// A spline shape's leaf: its monotone part k (the segment between knots k and k + 1).
+template <bool kCount, bool kFirstOnly = false>
+inline CurveHits hitsOfPart(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
+                            Stats& stats) noexcept {
+  const CurveHits hits = curveHits<kFirstOnly>(ray, shape.parts[k], ray.lo, hi, shape.frame.sphereRadius);
+  if constexpr (kCount) stats.quadratics += hits.solved;
+  return hits;
+}
+
+// The leaf of either kind of shape: a polyline's segment, or a spline's part (kCurve).
+template <bool kCurve, bool kCount, bool kFirstOnly = false>
+inline auto leafHits(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi, Stats& stats) noexcept {
+  if constexpr (kCurve) {
+    return hitsOfPart<kCount, kFirstOnly>(shape, ray, k, hi, stats);
+  } else {
+    return hitsOfSegment<kCount, kFirstOnly>(shape, ray, k, hi, stats);
+  }
+}
+
+// The nearest hit: (s, segment), ties to the lower segment; for spline shapes also the part's
+// parameter there.
+template <bool kCount, bool kCurve = false>
 struct NearestHit {
   const Shape::Impl& shape;
   const MeridianRay& ray;
@@ -58,13 +79,15 @@ struct NearestHit {
   Stats& stats;
   const double leafHi = hi;
   double s = std::numeric_limits<double>::infinity();
+  double u = 0.0;
   std::uint32_t segment = kNoSegment;
   static constexpr std::uint32_t kNoSegment = 0xffffffffu;
 
   bool operator()(std::uint32_t k) noexcept {
-    const SegmentHits hits = hitsOfSegment<kCount, true>(shape, ray, k, leafHi, stats);
+    const auto hits = leafHits<kCurve, kCount, true>(shape, ray, k, leafHi, stats);
     if (hits.count > 0 && (hits.s[0] < s || (hits.s[0] == s && k < segment))) {
       s = hits.s[0];
+      if constexpr (kCurve) u = hits.u[0];
       segment = k;
       hi = s;
     }
@@ -74,7 +97,7 @@ struct NearestHit {
 };
 
 // Whether any hit exists: the search ends at the first.
-template <bool kCount>
+template <bool kCount, bool kCurve = false>
 struct AnyHit {
   const Shape::Impl& shape;
   const MeridianRay& ray;
@@ -82,7 +105,7 @@ struct AnyHit {
   bool found = false;
 
   bool operator()(std::uint32_t k) noexcept {
-    found = hitsOfSegment<kCount, true>(shape, ray, k, ray.hi, stats).count > 0;
+    found = leafHits<kCurve, kCount, true>(shape, ray, k, ray.hi, stats).count > 0;
     return found;
   }
 };

@@ -3,6 +3,7 @@
 
 #include "util/isa.h"
 
+#include "curve/arc_length.h"
 #include "kernel/meridian_ray.h"
 #include "shape_impl.h"
 #include "util/azimuth.h"
@@ -40,6 +41,49 @@ inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ra
   hit.v = float(frame.v0 + std::clamp(along, 0.0, 1.0) * frame.dv);
   hit.segment = k;
   return hit;
+}
+
+// A hit on a spline shape's part k at parameter u. Straight parts are segments (surfaceHit);
+// curved ones take their normal from the curve's tangent at u and v from its arc length up to u.
+inline Hit curveSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
+                           double u) noexcept {
+  const CurvePart& part = shape.parts[k];
+  if (part.straight) return surfaceHit(shape, ray, caller, s, k);
+  const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
+  const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
+  double tr = cubicDerivative(part.r, u), tz = cubicDerivative(part.z, u);
+  if (tr == 0.0 && tz == 0.0) {
+    // Only at an end with a repeated control point (validation refuses cusps): the tangent's limit
+    // there is the next control point's direction, or the chord's.
+    const int from = u <= 0.5 ? 0 : 1, to = u <= 0.5 ? 2 : 3;
+    tr = part.r[to] - part.r[from], tz = part.z[to] - part.z[from];
+    if (tr == 0.0 && tz == 0.0) tr = part.r[3] - part.r[0], tz = part.z[3] - part.z[0];
+  }
+  // A tangent below 2^-500 (next to a control point repeated within rounding; found by fuzzing)
+  // would square to nothing: scaled by 2^600 first, exactly.
+  if (!(std::max(std::abs(tr), std::abs(tz)) >= 0x1p-500)) tr *= 0x1p600, tz *= 0x1p600;
+  const double inverse = 1.0 / std::sqrt(tr * tr + tz * tz);
+  const double nr = tz * inverse, nz = -tr * inverse;  // right of the direction of travel
+  Hit hit;
+  hit.t = callerT(ray, caller, s);
+  hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
+  hit.normal = {float(nr * cosPhi) + 0.0f, float(nr * sinPhi) + 0.0f, float(nz) + 0.0f};
+  hit.u = azimuthFraction(px, py);
+  const double v = hermiteAt(&shape.arcTable[part.arcOffset], part.arcSteps, u);
+  hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
+  hit.segment = k;
+  return hit;
+}
+
+// The hit of either kind of shape (u: the part's parameter, spline shapes only).
+template <bool kCurve>
+inline Hit leafSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
+                          double u) noexcept {
+  if constexpr (kCurve) {
+    return curveSurfaceHit(shape, ray, caller, s, k, u);
+  } else {
+    return surfaceHit(shape, ray, caller, s, k);
+  }
 }
 
 // kLanes hits at once, for packets: hit j is ray[j] at s[j] on segment[j], for a caller with

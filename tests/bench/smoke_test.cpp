@@ -46,7 +46,7 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
   expectFinite(document, "", {"error_incoherent", "error_camera", "mibit", "mesh", "leanest_mibit", "leanest_mesh",
                               "embree_cone", "embree_round_curve", "limitation"});
 
-  const std::set<std::string> timedEverywhere = {"mibit", "mesh", "sphere", "embree_cone", "embree_round_curve"};
+  const std::set<std::string> timedEverywhere = {"mibit", "mesh", "sphere", "embree_cone", "embree_round_curve", "spline"};
   const std::set<std::string> modes = {"incoherent_1", "camera_1", "camera_8", "incoherent_all"};
   ASSERT_EQ(document["speed_error"].size(), 5u);
   // Embree's curves take these shapes (the cone curve: some resolutions) and refuse the others,
@@ -84,10 +84,23 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
       EXPECT_GT(config["total_bytes"].get<double>(), 0.0);
     }
     EXPECT_EQ(methods, (std::set<std::string>{"sphere", "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear",
-                                               "kajiya", "mesh", "embree_cone", "embree_round_curve"}))
+                                               "kajiya", "mesh", "embree_cone", "embree_round_curve", "spline", "adaptive",
+                                               "uniform", "mesh_adaptive"}))
         << name;
     EXPECT_EQ(traced["embree_cone"] > 0, coneTakes.count(name) == 1) << name;
     EXPECT_EQ(traced["embree_round_curve"] > 0, roundTakes.count(name) == 1) << name;
+    // The spline fits the profile within 1e-9 of its size (closed form), and tracing it exactly
+    // leaves the float hit points' rounding: every hit within 1e-6 of the size of the true surface.
+    EXPECT_LE(shape["spline_error"].get<double>(), 1e-9) << name;
+    EXPECT_GT(shape["spline_pieces"].get<int>(), 0) << name;
+    for (const json& config : shape["configs"]) {
+      if (config["method"] != "spline") continue;
+      for (const char* rays : {"error_incoherent", "error_camera"}) EXPECT_LE(config[rays]["residual_max"].get<double>(), 1e-6) << name;
+    }
+    // Polyline points for one error, each sampling's count (how they compare is what the run reports).
+    for (const json& row : shape["polyline_points"]) {
+      for (const char* key : {"sample_points", "adaptive_points", "uniform_points"}) EXPECT_GT(row[key].get<int>(), 1) << name;
+    }
     EXPECT_EQ(shape["matched"].size(), 16u) << name;  // four error levels in four timing modes
   }
   ASSERT_EQ(document["scaling"].size(), 1u);

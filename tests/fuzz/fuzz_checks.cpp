@@ -98,28 +98,10 @@ void raysThrough(const Shape& shape, Vec3 target, float reach, std::mt19937_64& 
   checkRay(shape, {target, {-d.x, -d.y, -d.z}, 0.0f, kInf}, random);
 }
 
-}  // namespace
-
-void exerciseShapes(const Profile& profile, std::mt19937_64& random) {
+// Every query on `shape` (a profile's or a spline's; `profile` is shape.profile()).
+void exerciseShape(const Shape& shape, const Profile& profile, std::mt19937_64& random) {
   const std::span<const Point2> points = profile.points();
-  FUZZ_CHECK(points.size() >= 2);
-  FUZZ_CHECK(profile.arcLength().size() == points.size());
-  FUZZ_CHECK(profile.sourceIndex().size() == points.size());
-  FUZZ_CHECK(std::is_sorted(profile.sourceIndex().begin(), profile.sourceIndex().end()));
-
-  BuildOptions mibit;
-  mibit.shell = static_cast<ShellKind>(random() % 3);
-  mibit.subdivisions = static_cast<std::uint32_t>(random() % 4);
-  mibit.monotoneSplit = random() % 4 != 0;
-  mibit.rangeSearch = random() % 4 != 0;
-  BuildOptions linear;
-  linear.method = Method::linear;
-  BuildOptions kajiya;
-  kajiya.method = Method::kajiya;
-
-  for (const BuildOptions& options : {mibit, linear, kajiya}) {
-    const Shape shape(profile, options);
-    FUZZ_CHECK(shape.memoryBytes() > 0);
+  FUZZ_CHECK(shape.memoryBytes() > 0);
     (void)shape.treeNodeCount();
     const Bounds box = shape.bounds();
     const float reach = 2.0f * std::max({std::abs(box.lower.x), std::abs(box.upper.x), std::abs(box.lower.z),
@@ -147,7 +129,31 @@ void exerciseShapes(const Profile& profile, std::mt19937_64& random) {
       checkRay(shape, {{0.0f, 0.0f, box.upper.z + reach}, {0.0f, 0.0f, -1.0f}}, random);
       checkRay(shape, {{0.0f, 0.0f, box.lower.z - reach}, {0.0f, 0.0f, 1.0f}}, random);
     }
-  }
+}
+
+BuildOptions randomMibit(std::mt19937_64& random) {
+  BuildOptions mibit;
+  mibit.shell = static_cast<ShellKind>(random() % 3);
+  mibit.subdivisions = static_cast<std::uint32_t>(random() % 4);
+  mibit.monotoneSplit = random() % 4 != 0;
+  mibit.rangeSearch = random() % 4 != 0;
+  return mibit;
+}
+
+}  // namespace
+
+void exerciseShapes(const Profile& profile, std::mt19937_64& random) {
+  const std::span<const Point2> points = profile.points();
+  FUZZ_CHECK(points.size() >= 2);
+  FUZZ_CHECK(profile.arcLength().size() == points.size());
+  FUZZ_CHECK(profile.sourceIndex().size() == points.size());
+  FUZZ_CHECK(std::is_sorted(profile.sourceIndex().begin(), profile.sourceIndex().end()));
+
+  BuildOptions linear;
+  linear.method = Method::linear;
+  BuildOptions kajiya;
+  kajiya.method = Method::kajiya;
+  for (const BuildOptions& options : {randomMibit(random), linear, kajiya}) exerciseShape(Shape(profile, options), profile, random);
 
   // The tessellated baseline, while small: indices stay inside the vertex array.
   const std::uint32_t slices = 3 + static_cast<std::uint32_t>(random() % 6);
@@ -156,6 +162,24 @@ void exerciseShapes(const Profile& profile, std::mt19937_64& random) {
     FUZZ_CHECK(mesh.indices.size() == 6 * profile.segmentCount() * slices);
     for (const std::uint32_t index : mesh.indices) FUZZ_CHECK(3 * std::size_t{index} < mesh.vertices.size());
     FUZZ_CHECK(!(tessellationError(profile, slices) < 0.0));
+  }
+}
+
+void exerciseSplineShapes(const Spline& spline, std::mt19937_64& random) {
+  FUZZ_CHECK(spline.pieceCount() >= 1);
+  FUZZ_CHECK(spline.bezier().size() == 3 * spline.pieceCount() + 1);
+  BuildOptions linear;
+  linear.method = Method::linear;
+  for (const BuildOptions& options : {randomMibit(random), linear}) {
+    const Shape shape(spline, options);
+    const Profile& profile = shape.profile();
+    FUZZ_CHECK(profile.points().size() >= 2);
+    FUZZ_CHECK(profile.arcLength().size() == profile.points().size());
+    if (spline.kind() != SplineKind::linear) {
+      FUZZ_CHECK(shape.spline() != nullptr);
+      for (std::uint32_t k = 0; k < profile.segmentCount(); ++k) FUZZ_CHECK(shape.splinePiece(k) < spline.pieceCount());
+    }
+    exerciseShape(shape, profile, random);
   }
 }
 

@@ -45,5 +45,7 @@ inline std::mt19937_64 generatorFor(std::span<const std::uint8_t> data) {
 // every query on rays aimed at its vertices, along and across its axis, from its surface and with
 // tnear / tfar windows, checking each answer's documented postconditions.
 void exerciseShapes(const Profile& profile, std::mt19937_64& random);
+// The same for a spline's shapes (MIBIT with random options, and the linear scan).
+void exerciseSplineShapes(const Spline& spline, std::mt19937_64& random);
 
 }  // namespace revolve::fuzz

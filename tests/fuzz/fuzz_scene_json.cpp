@@ -82,6 +82,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   checkUnit(scene.camera.up);
   for (const io::SceneProfile& profile : scene.profiles) {
     FUZZ_CHECK(profile.profile.points().size() >= 2);
+    // A curve traced exactly is a curved kind without a tolerance; one with a tolerance is its polyline.
+    if (profile.spline) {
+      FUZZ_CHECK(profile.spline->kind() != SplineKind::linear && profile.tolerance == 0);
+      FUZZ_CHECK(profile.profile.points().front().r == profile.spline->bezier().front().r);
+    }
+    FUZZ_CHECK(profile.tolerance >= 0);
     FUZZ_CHECK(profile.creaseDegrees >= 0 && profile.creaseDegrees <= 180);
     // The shading normals of every accepted profile are built and unit at each segment's ends.
     const ShadingNormals normals(profile.profile, profile.creaseDegrees);

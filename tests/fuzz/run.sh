@@ -21,7 +21,8 @@ build=$(realpath -m "${2:-$root/build-fuzz}")
 cmake -S "$root" -B "$build" -G Ninja \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_DEMOS=ON
-cmake --build "$build" --target fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_scene_json fuzz_sensor_json fuzz_poses_csv
+cmake --build "$build" --target fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json \
+  fuzz_poses_csv
 # Regressions first: every seed and every saved finding, once each.
 ctest --test-dir "$build" --output-on-failure
 if [[ $seconds -eq 0 ]]; then  # build and replay only (libFuzzer reads -max_total_time=0 as "no limit")
@@ -29,11 +30,13 @@ if [[ $seconds -eq 0 ]]; then  # build and replay only (libFuzzer reads -max_tot
 fi
 
 # Input caps: a profile CSV line is at least 4 bytes ("1,2\n"), so 2048 bytes is at most ~500
-# points (and 128 raw double points); rays are parsed only; a scene of 4096 bytes holds profiles of
+# points (and 128 raw double points); 1024 bytes of spline points, at most 63 raw or 511 grid
+# points (the curve's self-intersection check subdivides parts); rays are parsed only; a scene of 4096 bytes holds profiles of
 # at most ~500 points; sensor files and poses are parsed only (beam angles up to 4096). Any input
 # taking over 10 s or 2 GB is
 # itself a finding (the work per input is O(n log n) in the points).
-declare -A max_len=([fuzz_profile_csv]=2048 [fuzz_rays_csv]=4096 [fuzz_profile_points]=2048 [fuzz_scene_json]=4096
+declare -A max_len=([fuzz_profile_csv]=2048 [fuzz_rays_csv]=4096 [fuzz_profile_points]=2048 [fuzz_spline_points]=1024
+                   [fuzz_scene_json]=4096
                    [fuzz_sensor_json]=4096 [fuzz_poses_csv]=4096)
 
 # The robot inputs' readers only parse, and their coverage stops growing within seconds (measured:
@@ -47,7 +50,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 failed=()
-for target in fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_scene_json fuzz_sensor_json fuzz_poses_csv; do
+for target in fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json fuzz_poses_csv; do
   corpus="$scratch/$target"
   mkdir -p "$corpus"
   cp "$here/corpus/$target/"* "$corpus/"

@@ -5,10 +5,12 @@
 // The contract under test:
 //   revolve-trace --profile P.csv --rays R.csv --out H.csv [--method mibit|linear|kajiya|mesh]
 //                 [--shell cylinder|cone|hybrid] [--subdivisions N] [--slices K]
+//                 [--spline linear|quadratic|bezier|catmull-rom|natural] [--tolerance T]
 // H.csv: header `hit,t,nx,ny,nz,u,v`, one line per ray in input order, `1,t,nx,ny,nz,u,v` or
 // `0,inf,0,0,0,0,0`. Bad input: non-zero exit, one line on stderr naming file, line and problem,
 // and no output file (an existing one is left untouched).
 #include "support/reference.h"
+#include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 #include "support/test_seeds.h"
 
@@ -19,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -474,6 +477,49 @@ TEST_F(TraceCliTest, RepeatedProfilePointIsAWarningWithFileAndLine) {
   EXPECT_NEAR(hits[0].v, 0.5, 1e-6);
 }
 
+TEST_F(TraceCliTest, SplinesAreTracedExactlyOrWithinTheirTolerance) {
+  // A sphere of radius 0.5 as four cubic arcs (each within arcError outside the sphere), rays from 3
+  // towards its centre: exact hits lie between the sphere and its offset, with radial normals;
+  // with --tolerance the polyline lies within the tolerance inside the curve.
+  const double radius = 0.5, error = testing::arcError(radius, kPi / 4);
+  std::string csv = "r,z\n";
+  for (const Point2& p : testing::bezierSphere(radius, 4)) {
+    char line[96];
+    std::snprintf(line, sizeof line, "%.17g,%.17g\n", p.r, p.z);
+    csv += line;
+  }
+  directory.write("p.csv", csv);
+  std::string rays;
+  std::vector<std::array<double, 3>> directions;
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> gauss;
+  for (int i = 0; i < 200; ++i) {
+    const double x = gauss(random), y = gauss(random), z = gauss(random), n = std::sqrt(x * x + y * y + z * z);
+    directions.push_back({x / n, y / n, z / n});
+    rays += std::to_string(3 * x / n) + "," + std::to_string(3 * y / n) + "," + std::to_string(3 * z / n) + "," +
+            std::to_string(-x / n) + "," + std::to_string(-y / n) + "," + std::to_string(-z / n) + ",0,inf\n";
+  }
+  directory.write("r.csv", rays);
+  for (const double tolerance : {0.0, 1e-3}) {
+    std::vector<std::string> args{"--profile", profilePath(), "--rays", raysPath(), "--out", outPath(), "--spline", "bezier"};
+    if (tolerance > 0) args.insert(args.end(), {"--tolerance", "0.001"});
+    const Result result = runTrace(args);
+    ASSERT_EQ(result.status, 0) << result.err;
+    const std::vector<HitLine> hits = readHits(outPath());
+    ASSERT_EQ(hits.size(), directions.size());
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+      ASSERT_TRUE(hits[i].hit);
+      // The ray's origin is printed with 6 decimals: 3 +- 1e-6 from the centre.
+      EXPECT_GE(hits[i].t, 3 - radius - error - 2e-6);
+      EXPECT_LE(hits[i].t, 3 - radius + tolerance + 2e-6);
+      if (tolerance == 0) {
+        const auto& d = directions[i];
+        EXPECT_NEAR(hits[i].nx * d[0] + hits[i].ny * d[1] + hits[i].nz * d[2], 1.0, 1e-5);
+      }
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad input: non-zero status, one line naming file, line and problem, no output file.
 
@@ -546,6 +592,19 @@ const std::vector<BadInput> kBadInputs = {
     {.name = "NegativeSubdivisions", .args = {"--subdivisions", "-1"}, .message = {"--subdivisions"},
      .usageError = true},
     {.name = "UnknownOption", .args = {"--bogus", "1"}, .message = {"--bogus"}, .usageError = true},
+    {.name = "SplineNotAnOption", .args = {"--spline", "cubic"}, .message = {"--spline"}, .usageError = true},
+    {.name = "ToleranceNotPositive", .args = {"--spline", "natural", "--tolerance", "0"}, .message = {"--tolerance"},
+     .usageError = true},
+    {.name = "ToleranceForAPolyline", .args = {"--tolerance", "0.01"}, .message = {"--tolerance", "curved --spline"}},
+    // Five points cannot make cubic Bezier pieces sharing their ends: the last point, line 6.
+    {.name = "BezierPointCount", .profile = "r,z\n0,0\n1,0\n1,1\n1,2\n0,2\n", .args = {"--spline", "bezier"},
+     .message = {"@/p.csv:6: ", "3n + 1"}},
+    // Points 1 and 2 (lines 3 and 4) of a natural spline are equal: the chord between has no length.
+    {.name = "NaturalSplineRepeatedPoint", .profile = "r,z\n0,0\n1,0\n1,0\n0,1\n", .args = {"--spline", "natural"},
+     .message = {"@/p.csv:4: ", "repeats point 1"}},
+    {.name = "ToleranceBelowTheCurvesResolution", .args = {"--spline", "catmull-rom", "--tolerance", "1e-30"},
+     .message = {"--tolerance", "2^-40"}},
+    {.name = "KajiyaForACurve", .args = {"--spline", "natural", "--method", "kajiya"}, .message = {"Kajiya", "polylines"}},
     {.name = "OutOptionMissing", .args = {"--profile", "@/p.csv", "--rays", "@/r.csv"}, .message = {"--out"},
      .usageError = true, .replaceFiles = true},
 };

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,31 @@ TEST(RevolveRenderCliTest, RendersWithEmbreeConeCurves) {
   EXPECT_EQ(stats["geometry"], "embree-cone");
   EXPECT_GT(stats["memory"]["revolve_bytes"].get<long>(), 0);  // the shading normals
   EXPECT_EQ(stats["mibit"]["queries"].get<long>(), 0);                 // no revolve geometry traced
+}
+
+TEST(RevolveRenderCliTest, ToleranceTracesSplinesAsPolylinesWithinThePixelFootprint) {
+  // The ball as one cubic Bezier piece (its widest radius 0.375 at z = 0.5). Seen by the camera at
+  // (0, -3, 1) with a 40-degree field over 60 rows, the nearest point of its bounding sphere (centre
+  // (0, 0, 0.5), radius hypot(0.375, 0.5)) lies hypot(3, 0.5) - 0.625 away, where a pixel spans
+  // that distance times 2 tan(20 degrees) / 60.
+  const ScratchDirectory dir;
+  dir.write("scene.json", testing::replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"));
+  dir.write("bottle.csv", kBottleCsv);
+  const Result result = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "80", "--height", "60", "--spp", "1",
+                                               "--tolerance", "pixel", "--stats", "stats.json"});
+  ASSERT_EQ(result.status, 0) << result.err;
+  const nlohmann::json stats = nlohmann::json::parse(readWholeFile(dir / "stats.json"));
+  ASSERT_EQ(stats["curves_as_polylines"].size(), 1u);  // the bottle is a polyline already
+  const nlohmann::json& ball = stats["curves_as_polylines"][0];
+  EXPECT_EQ(ball["profile"], "ball");
+  const double footprint = (std::hypot(3.0, 0.5) - std::hypot(0.375, 0.5)) * 2 * std::tan(20 * M_PI / 180) / 60;
+  EXPECT_NEAR(ball["tolerance"].get<double>(), footprint, 1e-4 * footprint);
+  EXPECT_GE(ball["points"].get<int>(), 3);
+  // A number is a tolerance in the profile's units.
+  const Result fixed = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "8", "--height", "6", "--spp", "1",
+                                              "--tolerance", "0.001", "--stats", "stats.json"});
+  ASSERT_EQ(fixed.status, 0) << fixed.err;
+  EXPECT_EQ(nlohmann::json::parse(readWholeFile(dir / "stats.json"))["curves_as_polylines"][0]["tolerance"], 0.001);
 }
 
 class RevolveRenderBadInputTest : public ::testing::TestWithParam<BadCase> {};

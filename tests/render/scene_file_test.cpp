@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 namespace revolve {
 namespace {
@@ -101,6 +102,39 @@ TEST(SceneFileTest, TheLimitsAcceptTheirEdges) {
   EXPECT_EQ(io::parseScene(text, "scene.json", folder).objects.size(), 2u);
   EXPECT_THROW(io::parseScene(testing::replaced(text, "-1099511627776", "-1099511627777"), "scene.json", folder), io::SceneError);
   EXPECT_THROW(io::parseScene(testing::replaced(text, "1.52587890625e-05", "1.5258789e-05"), "scene.json", folder), io::SceneError);
+}
+
+TEST(SceneFileTest, SplineProfilesReadExactOrAsPolylines) {
+  // The ball's points as a cubic Bezier piece: traced exactly, or as a polyline within a tolerance.
+  const testing::ScratchDirectory dir;
+  std::string scene = testing::replaced(testing::kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )");
+  scene = testing::replaced(scene, R"("bottle": {"csv")", R"("bottle": {"spline": "natural", "tolerance": 0.001, "csv")");
+  dir.write("scene.json", scene);
+  dir.write("bottle.csv", testing::kBottleCsv);
+  const WorkingDirectory inside(dir.path());
+  const io::SceneDescription read = io::readScene("scene.json");
+  const io::SceneProfile& ball = read.profiles[0];
+  ASSERT_TRUE(ball.spline.has_value());
+  EXPECT_EQ(ball.spline->kind(), SplineKind::bezier);
+  EXPECT_EQ(ball.tolerance, 0);
+  // Its polyline for the tools that need one, within 1e-5 of the curve's size: its vertices lie on
+  // the cubic, r(u) = 1.5 u (1 - u) (controls 0, 0.5, 0.5, 0) where z(u) = 0.6 u + 1.2 u^2 - 0.8 u^3.
+  EXPECT_GT(ball.profile.points().size(), 10u);
+  for (const Point2& p : ball.profile.points()) {
+    double lo = 0, hi = 1;  // z is increasing: the vertex's u by bisection
+    for (int i = 0; i < 100; ++i) {
+      const double u = 0.5 * (lo + hi);
+      (0.6 * u + 1.2 * u * u - 0.8 * u * u * u < p.z ? lo : hi) = u;
+    }
+    EXPECT_NEAR(p.r, 1.5 * lo * (1 - lo), 1e-12);
+  }
+  const io::SceneProfile& bottle = read.profiles[1];
+  EXPECT_FALSE(bottle.spline.has_value());
+  EXPECT_EQ(bottle.tolerance, 0.001);
+  EXPECT_EQ(bottle.profile.points().front().r, 0.0);
+  EXPECT_EQ(bottle.profile.points().back().z, 1.0);
+  // A natural spline through 6 points with corners rounded: more points than its own 6.
+  EXPECT_GT(bottle.profile.points().size(), 6u);
 }
 
 }  // namespace

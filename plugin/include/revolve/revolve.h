@@ -13,7 +13,8 @@
 //   outwards for a profile listed from bottom to top. They are not flipped towards the ray.
 // - u = phi / 2pi in [0, 1), phi = atan2(y, x) of the hit; v = arc length along the profile from its
 //   first point, normalised to [0, 1]; `segment` (Embree's primID) is the index of the profile
-//   segment hit (segment i joins points i and i + 1 of Profile::points()).
+//   segment hit (segment i joins points i and i + 1 of Profile::points()); for a spline shape, the
+//   monotone part of the curve hit (Shape::splinePiece names its Bezier piece).
 // - Every query is thread-safe on a built Shape, never allocates, throws or locks.
 #pragma once
 
@@ -27,6 +28,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace revolve {
@@ -54,6 +56,8 @@ class ProfileError : public std::invalid_argument {
     tooManyPoints,
     outOfRange,       // a coordinate beyond kMaxCoordinate, or an extent below kMinExtent
     segmentTooShort,  // a segment shorter than kMinSegmentFraction of the profile's extent
+    badPointCount,    // a spline whose point count its kind cannot take (2n + 1, 3n + 1)
+    crossesAxis,      // a spline whose curve reaches r < 0 between the points it passes through
   };
   ProfileError(Rule rule, std::size_t index, const std::string& message)
       : std::invalid_argument(message), rule_(rule), index_(index) {}
@@ -70,6 +74,8 @@ struct ProfileWarning {
   std::size_t index;  // index in the caller's input of the point concerned
   std::string message;
 };
+
+class Spline;
 
 class Profile {
  public:
@@ -92,6 +98,16 @@ class Profile {
   // and profiles that are not monotone in z are all valid.
   explicit Profile(std::span<const Point2> points);
 
+  // The fewest points on `curve` whose polyline stays within `tolerance` of it: from each point,
+  // the chord reaching farthest along the curve whose largest distance from the arc it replaces
+  // (computed exactly, piece by piece, from the cubics) is within the tolerance. Adaptive in
+  // curvature: a straight run gets no point between its ends, and a chord may span a smooth join;
+  // the ends and every corner (a join where the tangent turns) are kept as vertices. A linear
+  // spline gives its own points. Throws
+  // std::invalid_argument unless tolerance > 0 and finite, and ProfileError when the polyline
+  // itself is not a valid profile (a tolerance wider than a gap between two parts of the curve).
+  static Profile fromCurve(const Spline& curve, double tolerance);
+
   std::span<const Point2> points() const noexcept { return points_; }
   std::size_t segmentCount() const noexcept { return points_.size() - 1; }
   // Closed: the profile bounds a solid (its ends meet, or both lie on the axis).
@@ -108,6 +124,91 @@ class Profile {
   std::vector<Point2> points_;
   std::vector<double> arcLength_;
   std::vector<std::size_t> sourceIndex_;
+  std::vector<ProfileWarning> warnings_;
+  bool closed_ = false;
+
+  // A Shape built from a Spline reports its pieces' ends through profile(): not validated as a
+  // polyline (the curve was), see Shape::profile().
+  friend class Shape;
+  struct Unchecked {};
+  Profile(Unchecked, std::vector<Point2> points, std::vector<double> arcLength, bool closed);
+};
+
+// ---------------------------------------------------------------------------------------------
+// Spline: a smooth profile, traced exactly (Shape) or as a polyline within a tolerance
+// (Profile::fromCurve).
+
+enum class SplineKind {
+  // A polyline through the points: the same profile as Profile(points).
+  linear,
+  // Quadratic Bezier pieces: 2n + 1 points; piece i has the control points 2i, 2i + 1, 2i + 2, so
+  // neighbours share their end point and the curve passes through the even-numbered points.
+  quadratic,
+  // Cubic Bezier pieces: 3n + 1 points; piece i has the control points 3i to 3i + 3, neighbours
+  // sharing their end point. A straight piece has its two inner points on the chord.
+  bezier,
+  // A centripetal Catmull-Rom curve through every point (Yuksel, Schaefer & Keyser 2011: knot
+  // spacing sqrt(chord length); no cusp or self-intersection within a piece). At an open end the
+  // curve leaves along the first (last) chord (the missing neighbour is the mirror image of the
+  // second point); when the first and last points are equal it closes smoothly (periodic). Unlike
+  // POV-Ray's cubic_spline, whose first and last points only steer, it passes through every point.
+  catmullRom,
+  // The natural cubic spline through every point, parametrised by chord length: C2 everywhere,
+  // zero second derivative at an open end; periodic (C2 across the join) when the first and last
+  // points are equal.
+  natural,
+};
+
+// "linear", "quadratic", "bezier", "catmull-rom", "natural" (the names the scene file and
+// revolve-trace take), and back; nothing for an unknown name.
+const char* splineKindName(SplineKind kind) noexcept;
+std::optional<SplineKind> splineKindNamed(std::string_view name) noexcept;
+
+class Spline {
+ public:
+  // Validates the points and converts the curve to cubic Bezier pieces. Throws ProfileError for:
+  // a point count the kind cannot take (linear, catmull-rom and natural need at least 2 points,
+  // quadratic 2n + 1 >= 3, bezier 3n + 1 >= 4); a non-finite coordinate; a coordinate or extent
+  // outside Profile's range; r < 0 at a point the curve passes through (Bezier control points off
+  // the curve may have r < 0); a curve that reaches r < 0 anywhere (crossesAxis: it may touch the
+  // axis only at a point it passes through); two equal consecutive points of catmull-rom or
+  // natural (their chord has no length to parametrise); a piece with all its points equal, or
+  // shorter than Profile::kMinSegmentFraction of the extent; a curve that crosses or touches itself
+  // (checked conservatively on the pieces' control hulls: see below); more than kMaxPoints points.
+  // A linear spline is validated as Profile(points) is (repeated points dropped with a warning).
+  //
+  // Self-intersection: the curve, split where r or z turns (so that every part is monotone in
+  // both and lies in the box of its ends), is checked part against part by subdivision: two parts
+  // are apart when their boxes are, or when their chords lie farther apart than the distances of
+  // their control points from them (the control hull lies that close to the chord); parts that meet
+  // at a join are apart when the cones from the join holding their control hulls meet only there.
+  // Parts that cannot be separated before they are 2^-40 of the extent long, or within 2^16
+  // subdivisions of the pair, count as touching: a curve coming that close to itself (or running
+  // that close to itself for a long stretch), or folding back on itself in a cusp, is refused.
+  Spline(SplineKind kind, std::span<const Point2> points);
+
+  // Index and cost limits: the monotone parts (up to 5 a cubic piece) index 32-bit tree nodes.
+  static constexpr std::size_t kMaxPoints = std::size_t{1} << 28;
+
+  SplineKind kind() const noexcept { return kind_; }
+  std::span<const Point2> points() const noexcept { return points_; }  // as given (linear: as kept)
+  // The curve as cubic Bezier pieces: piece i has control points bezier()[3 i] to bezier()[3 i + 3]
+  // (quadratic pieces degree-elevated, linear segments with their inner points at the thirds).
+  std::span<const Point2> bezier() const noexcept { return bezier_; }
+  std::size_t pieceCount() const noexcept { return (bezier_.size() - 1) / 3; }
+  // Index in points() of the point where piece i starts (for messages and the readers' lines).
+  std::size_t pieceStart(std::size_t piece) const noexcept { return pieceStart_[piece]; }
+  // The point of piece `piece` at parameter u in [0, 1] (de Casteljau).
+  Point2 at(std::size_t piece, double u) const noexcept;
+  // Closed: the curve bounds a solid (its ends meet, or both lie on the axis).
+  bool closed() const noexcept { return closed_; }
+  const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
+
+ private:
+  SplineKind kind_;
+  std::vector<Point2> points_;
+  std::vector<Point2> bezier_;
+  std::vector<std::size_t> pieceStart_;
   std::vector<ProfileWarning> warnings_;
   bool closed_ = false;
 };
@@ -149,7 +250,7 @@ struct Stats {
   std::uint64_t rays = 0;
   std::uint64_t nodesVisited = 0;  // tree nodes (MIBIT / strip tree) popped and examined
   std::uint64_t shellTests = 0;    // bounding-shell or strip intersection tests
-  std::uint64_t quadratics = 0;    // ray / truncated-cone quadratics solved (Wang)
+  std::uint64_t quadratics = 0;    // ray / truncated-cone quadratics solved (Wang), or curve parts solved
   Stats& operator+=(const Stats& other) noexcept;
 };
 
@@ -160,11 +261,25 @@ struct Bounds {
 class Shape {
  public:
   explicit Shape(Profile profile, const BuildOptions& options = {});
+  // A smooth profile traced exactly: the curve is split where r or z turns, into parts monotone in
+  // both that take the place of segments in the search (each lies in the box of its ends), and each
+  // part's surface is solved exactly at the leaves (README, How it works). Methods: mibit (every
+  // shell kind, tree and option) and linear; Method::kajiya throws std::invalid_argument (its strips
+  // bound polylines). A linear spline builds the polyline shape of Profile(curve.points()).
+  explicit Shape(Spline curve, const BuildOptions& options = {});
   ~Shape();
   Shape(Shape&&) noexcept;
   Shape& operator=(Shape&&) noexcept;
 
+  // The profile. For a spline shape: the ends of its monotone parts in order, with the curve's arc
+  // lengths (segment k stands for part k, as Hit::segment numbers them); not validated as a
+  // polyline (its chords are not the surface and may cross where the curve does not).
   const Profile& profile() const noexcept;
+  // The curve a spline shape traces; nullptr for a polyline shape (and for a linear spline).
+  const Spline* spline() const noexcept;
+  // For a spline shape, the piece of spline()->bezier() that part `segment` belongs to.
+  // Precondition: spline() != nullptr and segment < profile().segmentCount().
+  std::uint32_t splinePiece(std::uint32_t segment) const noexcept;
   const BuildOptions& options() const noexcept;
   // Object-space box, padded by 2^-12 of its largest coordinate so that Embree's single-precision
   // box test does not cull hits where the surface touches it, for rays starting up to ~10^5 times
@@ -369,7 +484,10 @@ class ShadingNormals {
 // from the profile polyline in the (r, z) half-plane (law of cosines: the nearest surface point is
 // in the point's own meridian plane). So the distance to a point, and the clearance of a vertical
 // cylinder beside an upright shape, are 2-D problems, solved here exactly (up to double rounding)
-// with the MIBIT tree's meridian boxes pruning far segments.
+// with the MIBIT tree's meridian boxes pruning far segments. For a spline shape the same holds of
+// its curve: each monotone part is solved to double rounding (the depth inside a rectangle is the
+// least of four monotone functions of the curve's parameter; apart, the nearest feature is a side,
+// at a part's end or strip boundary, or a corner, at a root of a degree-5 polynomial).
 
 struct MeridianPoint {
   Point2 point;      // the closest point of the profile polyline

@@ -48,9 +48,19 @@ struct FilterLane {
   RTCHitN* hits() noexcept { return reinterpret_cast<RTCHitN*>(hit); }
 };
 
+// The curve parameter of hit j of a leaf (spline parts only; 0 for segments, which need none).
+template <class Hits>
+inline double leafParameter(const Hits& hits, int j) noexcept {
+  if constexpr (requires { hits.u[j]; }) {
+    return hits.u[j];
+  } else {
+    return 0.0;
+  }
+}
+
 // Visits candidate hits of lane i in search order and offers each one, nearest first within a
 // segment, to the intersection filters; an accepted one becomes the lane's hit and lowers hi.
-template <bool kCount>
+template <bool kCount, bool kCurve>
 struct FilteredNearest {
   const RTCIntersectFunctionNArguments* args;
   const Shape::Impl& shape;
@@ -66,10 +76,10 @@ struct FilteredNearest {
   // Candidates are offered nearest first within a segment; across segments, as in NearestHit, a
   // candidate must beat the accepted hit in (s, segment) order, so ties go to the lower segment.
   bool operator()(std::uint32_t k) noexcept {
-    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, leafHi, stats);
+    const auto hits = leafHits<kCurve, kCount>(shape, ray, k, leafHi, stats);
     for (int j = 0; j < hits.count; ++j) {
       if (hits.s[j] > hi || (hits.s[j] == hi && k >= acceptedSegment)) break;
-      if (offer(surfaceHit(shape, ray, caller, hits.s[j], k))) {
+      if (offer(leafSurfaceHit<kCurve>(shape, ray, caller, hits.s[j], k, leafParameter(hits, j)))) {
         hi = hits.s[j];
         acceptedSegment = k;
         break;
@@ -100,7 +110,7 @@ struct FilteredNearest {
   }
 };
 
-template <bool kCount>
+template <bool kCount, bool kCurve>
 struct FilteredAny {
   const RTCOccludedFunctionNArguments* args;
   const Shape::Impl& shape;
@@ -111,8 +121,10 @@ struct FilteredAny {
   bool found = false;
 
   bool operator()(std::uint32_t k) noexcept {
-    const SegmentHits hits = hitsOfSegment<kCount>(shape, ray, k, ray.hi, stats);
-    for (int j = 0; j < hits.count && !found; ++j) found = offer(surfaceHit(shape, ray, caller, hits.s[j], k));
+    const auto hits = leafHits<kCurve, kCount>(shape, ray, k, ray.hi, stats);
+    for (int j = 0; j < hits.count && !found; ++j) {
+      found = offer(leafSurfaceHit<kCurve>(shape, ray, caller, hits.s[j], k, leafParameter(hits, j)));
+    }
     return found;
   }
 
@@ -133,7 +145,7 @@ struct FilteredAny {
 };
 
 // The nearest hit of lane i, its MeridianRay set up, written into the packet.
-template <bool kCount>
+template <bool kCount, bool kCurve>
 inline void intersectLane(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
                           const MeridianRay& meridian, unsigned i, Stats& stats) noexcept {
   const unsigned N = args->N;
@@ -141,14 +153,14 @@ inline void intersectLane(const RTCIntersectFunctionNArguments* args, const Shap
   const Ray ray = laneRay(rays, N, i);
   double hi = meridian.hi;
   if (filtered) {
-    FilteredNearest<kCount> visitor{args, shape, meridian, ray, i, hi, stats};
+    FilteredNearest<kCount, kCurve> visitor{args, shape, meridian, ray, i, hi, stats};
     searchShape<kCount>(shape, meridian, hi, visitor, stats);
     return;
   }
-  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  NearestHit<kCount, kCurve> nearest{shape, meridian, hi, stats};
   searchShape<kCount>(shape, meridian, hi, nearest, stats);
   if (!nearest.found()) return;
-  const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+  const Hit hit = leafSurfaceHit<kCurve>(shape, meridian, ray, nearest.s, nearest.segment, nearest.u);
   const RTCHit out = embreeHit(hit, args->geomID, args->context);
   RTCRayN_tfar(rays, N, i) = hit.t;
   rtcCopyHitToHitN(RTCRayHitN_HitN(args->rayhit, N), &out, N, i);
@@ -180,8 +192,9 @@ inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, flo
 }
 
 // A packet: the lanes set up kLanes at a time, searched one by one, and their hits' attributes
-// computed kLanes at a time (surfaceHitLanes, equal to surfaceHit bit for bit).
-template <bool kCount>
+// computed kLanes at a time (surfaceHitLanes, equal to surfaceHit bit for bit; spline shapes' one
+// at a time).
+template <bool kCount, bool kCurve>
 inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
                             Stats& stats) noexcept {
   const unsigned N = args->N;  // 4, 8 or 16: a multiple of kLanes
@@ -191,6 +204,7 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
     unsigned lane;
     double s;
     std::uint32_t segment;
+    double u;
   };
   Found found[16];
   int foundCount = 0;
@@ -203,14 +217,22 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
     for (; active != 0; active &= active - 1) {
       const unsigned i = first + unsigned(__builtin_ctz(active));
       if (filtered) {
-        intersectLane<kCount>(args, shape, true, meridians[i], i, stats);
+        intersectLane<kCount, kCurve>(args, shape, true, meridians[i], i, stats);
         continue;
       }
       double hi = meridians[i].hi;
-      NearestHit<kCount> nearest{shape, meridians[i], hi, stats};
+      NearestHit<kCount, kCurve> nearest{shape, meridians[i], hi, stats};
       searchShape<kCount>(shape, meridians[i], hi, nearest, stats);
-      if (nearest.found()) found[foundCount++] = {i, nearest.s, nearest.segment};
+      if (nearest.found()) found[foundCount++] = {i, nearest.s, nearest.segment, nearest.u};
     }
+  }
+  if constexpr (kCurve) {
+    for (int j = 0; j < foundCount; ++j) {
+      const Found& f = found[j];
+      const Hit hit = curveSurfaceHit(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment, f.u);
+      writeHit(args, f.lane, hit.t, hit.normal.x, hit.normal.y, hit.normal.z, hit.u, hit.v, hit.segment);
+    }
+    return;
   }
   for (int first = 0; first < foundCount; first += kLanes) {
     HitLanes in;
@@ -238,7 +260,7 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
 
 // rtcIntersect1's case, without a filter: N = 1, where Embree's packet is exactly an RTCRayHit, so
 // the fields are read and written directly rather than through the N-wide accessors.
-template <bool kCount>
+template <bool kCount, bool kCurve>
 inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, Stats& stats) noexcept {
   RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
   const Ray ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
@@ -248,10 +270,10 @@ inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape
   MeridianRay meridian;
   if (!setUpMeridianRay(shape.frame, ray, meridian)) return;
   double hi = meridian.hi;
-  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  NearestHit<kCount, kCurve> nearest{shape, meridian, hi, stats};
   searchShape<kCount>(shape, meridian, hi, nearest, stats);
   if (!nearest.found()) return;
-  const Hit hit = surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+  const Hit hit = leafSurfaceHit<kCurve>(shape, meridian, ray, nearest.s, nearest.segment, nearest.u);
   rayHit.ray.tfar = hit.t;
   rayHit.hit.Ng_x = hit.normal.x;
   rayHit.hit.Ng_y = hit.normal.y;
@@ -263,9 +285,8 @@ inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape
   for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) rayHit.hit.instID[level] = args->context->instID[level];
 }
 
-template <bool kCount>
-void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+template <bool kCount, bool kCurve>
+void intersectWith(const RTCIntersectFunctionNArguments* args, Geometry::Payload& payload) {
   const Shape::Impl& shape = *payload.shape;
   const bool filtered = payload.intersectFilter || args->context->filter != nullptr;
   Stats stats;
@@ -275,21 +296,30 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
       MeridianRay meridian;
       if (filtered) {
         if (setUpMeridianRay(shape.frame, laneRay(RTCRayHitN_RayN(args->rayhit, 1), 1, 0), meridian)) {
-          intersectLane<kCount>(args, shape, true, meridian, 0, stats);
+          intersectLane<kCount, kCurve>(args, shape, true, meridian, 0, stats);
         }
       } else {
-        intersectOne<kCount>(args, shape, stats);
+        intersectOne<kCount, kCurve>(args, shape, stats);
       }
     }
   } else {
-    intersectPacket<kCount>(args, shape, filtered, stats);
+    intersectPacket<kCount, kCurve>(args, shape, filtered, stats);
   }
   if constexpr (kCount) payload.add(stats);
 }
 
 template <bool kCount>
-void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  if (payload.shape->curved()) {
+    intersectWith<kCount, true>(args, payload);
+  } else {
+    intersectWith<kCount, false>(args, payload);
+  }
+}
+
+template <bool kCount, bool kCurve>
+void occludedWith(const RTCOccludedFunctionNArguments* args, Geometry::Payload& payload) {
   const Shape::Impl& shape = *payload.shape;
   const unsigned N = args->N;
   const bool filtered = payload.occlusionFilter || args->context->filter != nullptr;
@@ -303,17 +333,27 @@ void occludedCallback(const RTCOccludedFunctionNArguments* args) {
     double hi = meridian.hi;
     bool found;
     if (filtered) {
-      FilteredAny<kCount> visitor{args, shape, meridian, ray, i, stats};
+      FilteredAny<kCount, kCurve> visitor{args, shape, meridian, ray, i, stats};
       searchShape<kCount>(shape, meridian, hi, visitor, stats);
       found = visitor.found;
     } else {
-      AnyHit<kCount> any{shape, meridian, stats};
+      AnyHit<kCount, kCurve> any{shape, meridian, stats};
       searchShape<kCount>(shape, meridian, hi, any, stats);
       found = any.found;
     }
     if (found) RTCRayN_tfar(args->ray, N, i) = -std::numeric_limits<float>::infinity();
   }
   if constexpr (kCount) payload.add(stats);
+}
+
+template <bool kCount>
+void occludedCallback(const RTCOccludedFunctionNArguments* args) {
+  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  if (payload.shape->curved()) {
+    occludedWith<kCount, true>(args, payload);
+  } else {
+    occludedWith<kCount, false>(args, payload);
+  }
 }
 
 }  // namespace REVOLVE_ISA

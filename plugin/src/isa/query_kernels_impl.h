@@ -11,39 +11,39 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
-template <bool kCount>
+template <bool kCount, bool kCurve>
 std::optional<Hit> nearestHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
   if constexpr (kCount) ++stats.rays;
   MeridianRay meridian;
   if (!setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
   double hi = meridian.hi;
-  NearestHit<kCount> nearest{shape, meridian, hi, stats};
+  NearestHit<kCount, kCurve> nearest{shape, meridian, hi, stats};
   searchShape<kCount>(shape, meridian, hi, nearest, stats);
   if (!nearest.found()) return std::nullopt;
-  return surfaceHit(shape, meridian, ray, nearest.s, nearest.segment);
+  return leafSurfaceHit<kCurve>(shape, meridian, ray, nearest.s, nearest.segment, nearest.u);
 }
 
-template <bool kCount>
+template <bool kCount, bool kCurve>
 bool anyHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
   if constexpr (kCount) ++stats.rays;
   MeridianRay meridian;
   if (!setUpMeridianRay(shape.frame, ray, meridian)) return false;
   double hi = meridian.hi;
-  AnyHit<kCount> any{shape, meridian, stats};
+  AnyHit<kCount, kCurve> any{shape, meridian, stats};
   searchShape<kCount>(shape, meridian, hi, any, stats);
   return any.found;
 }
 
 inline std::optional<Hit> intersectEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
-  if (stats != nullptr) return nearestHit<true>(shape, ray, *stats);
   Stats unused;
-  return nearestHit<false>(shape, ray, unused);
+  if (shape.curved()) return stats != nullptr ? nearestHit<true, true>(shape, ray, *stats) : nearestHit<false, true>(shape, ray, unused);
+  return stats != nullptr ? nearestHit<true, false>(shape, ray, *stats) : nearestHit<false, false>(shape, ray, unused);
 }
 
 inline bool occludedEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
-  if (stats != nullptr) return anyHit<true>(shape, ray, *stats);
   Stats unused;
-  return anyHit<false>(shape, ray, unused);
+  if (shape.curved()) return stats != nullptr ? anyHit<true, true>(shape, ray, *stats) : anyHit<false, true>(shape, ray, unused);
+  return stats != nullptr ? anyHit<true, false>(shape, ray, *stats) : anyHit<false, false>(shape, ray, unused);
 }
 
 inline constexpr QueryKernels kQueryKernels{

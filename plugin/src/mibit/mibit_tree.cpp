@@ -31,9 +31,16 @@ Extent extentOf(std::span<const Point2> run) {
 // The band parallel to the chord that holds the run. Its normal is rounded to float first and its
 // limits computed for that normal, so the stored band holds the run (up to the double rounding of
 // the limits, which the shell test's margin covers).
-Band chordBand(std::span<const Point2> run) {
+Band chordBand(std::span<const Point2> run, std::span<const Point2> hull) {
   const Chord chord = chordOf(run);
-  return bandHolding(run, double(float(chord.uz)), double(float(-chord.ur)));
+  Band band = bandHolding(run, double(float(chord.uz)), double(float(-chord.ur)));
+  // A curved run lies in its control hull: the band holds the inner control points too.
+  for (const Point2& p : hull) {
+    const double w = band.nr * p.r + band.nz * p.z;
+    band.wLow = std::min(band.wLow, w);
+    band.wHigh = std::max(band.wHigh, w);
+  }
+  return band;
 }
 
 double meanChord(double area, double perimeter) { return perimeter > 0.0 ? std::numbers::pi * area / perimeter : 0.0; }
@@ -75,7 +82,8 @@ struct Draft {
 
 class Builder {
  public:
-  Builder(std::span<const Point2> points, const BuildOptions& options) : points_(points), options_(options) {}
+  Builder(std::span<const Point2> points, std::span<const Point2> innerControls, const BuildOptions& options)
+      : points_(points), innerControls_(innerControls), options_(options) {}
 
   MibitTree build() {
     const auto segments = static_cast<std::uint32_t>(points_.size() - 1);
@@ -129,7 +137,7 @@ class Builder {
   void fillImplicit(const MonotoneInterval& interval, std::uint64_t heap, std::uint64_t leafBegin, std::uint64_t leafEnd) {
     const std::uint32_t first = MibitTree::leafVertex(interval, leafBegin), last = MibitTree::leafVertex(interval, leafEnd);
     const std::span<const Point2> run = points_.subspan(first, last - first + 1);
-    const Band band = chordBand(run);
+    const Band band = chordBand(run, hullOf(first, last));
     ImplicitShell& shell = tree_.implicitShells[interval.shellOffset + heap];
     shell = {float(band.nr), float(band.nz), floatBelow(band.wLow), floatAbove(band.wHigh),
              run.size() == 2 ? NodeShell::cylinder : chooseShell(options_.shell, extentOf(run), band)};
@@ -197,7 +205,7 @@ class Builder {
   void fitShell(const Draft& draft, bool isRoot, MibitNode& node) const {
     const std::span<const Point2> run = points_.subspan(draft.segmentBegin, draft.segmentEnd - draft.segmentBegin + 1);
     const Extent extent = extentOf(run);
-    const Band band = chordBand(run);
+    const Band band = chordBand(run, hullOf(draft.segmentBegin, draft.segmentEnd));
     node.zLow = floatBelow(extent.zLow);
     node.zHigh = floatAbove(extent.zHigh);
     node.rMin = floatBelow(extent.rMin);
@@ -215,7 +223,14 @@ class Builder {
     }
   }
 
+  // The inner control points of segments first to last - 1 (none for a polyline).
+  std::span<const Point2> hullOf(std::size_t first, std::size_t last) const {
+    if (innerControls_.empty()) return {};
+    return innerControls_.subspan(2 * first, 2 * (last - first));
+  }
+
   std::span<const Point2> points_;
+  std::span<const Point2> innerControls_;
   const BuildOptions& options_;
   std::vector<Draft> drafts_;
   MibitTree tree_;
@@ -243,8 +258,8 @@ std::vector<MonotoneInterval> monotoneIntervals(std::span<const Point2> points) 
   return intervals;
 }
 
-MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options) {
-  return Builder(points, options).build();
+MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options, std::span<const Point2> innerControls) {
+  return Builder(points, innerControls, options).build();
 }
 
 }  // namespace revolve::detail

@@ -78,7 +78,11 @@ struct MibitTree {
   }
 };
 
-// `points` in the shape's local frame. Options used: shell, subdivisions, monotoneSplit.
-MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options);
+// `points` in the shape's local frame. Options used: shell, subdivisions, monotoneSplit. For a
+// spline shape, `points` are its monotone parts' ends and `innerControls` the parts' inner control
+// points, two a part, which cone shells then hold too (cylinder shells need only the ends: a
+// monotone part lies in the box of its ends).
+MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options,
+                         std::span<const Point2> innerControls = {});
 
 }  // namespace revolve::detail

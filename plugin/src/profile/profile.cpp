@@ -108,3 +108,13 @@ Profile::Profile(std::span<const Point2> input) {
 }
 
 }  // namespace revolve
+
+namespace revolve {
+
+Profile::Profile(Unchecked, std::vector<Point2> points, std::vector<double> arcLength, bool closed)
+    : points_(std::move(points)), arcLength_(std::move(arcLength)), closed_(closed) {
+  sourceIndex_.resize(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) sourceIndex_[i] = i;
+}
+
+}  // namespace revolve

@@ -1,0 +1,90 @@
+#include "curve_tolerance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace revolve::render {
+namespace {
+
+using Vec3d = io::Vec3d;
+
+// The rotation of the object's transform applied to v (Rodrigues' formula about the unit axis).
+Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
+  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0, c = std::cos(theta), s = std::sin(theta);
+  const Vec3d& k = transform.rotateAxis;
+  const Vec3d kv{k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
+  const double along = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
+  Vec3d out;
+  for (int i = 0; i < 3; ++i) out[i] = v[i] * c + kv[i] * s + k[i] * along * (1 - c);
+  return out;
+}
+
+}  // namespace
+
+CurveTolerance parseCurveTolerance(const std::string& text) {
+  if (text == "pixel") return {true, 0};
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !(value > 0 && value < HUGE_VAL)) {
+    throw std::runtime_error("--tolerance \"" + text.substr(0, 40) + "\": expected \"pixel\" or a number > 0 (in each profile's units)");
+  }
+  return {false, value};
+}
+
+std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& choice, int height) {
+  std::vector<double> tolerance(scene.profiles.size(), std::numeric_limits<double>::infinity());
+  const double pixelAngle = 2.0 * std::tan(scene.camera.fovDegrees * std::numbers::pi / 360.0) / height;
+  for (const io::SceneObject& object : scene.objects) {
+    const io::SceneProfile& profile = scene.profiles[object.profile];
+    if (!profile.spline) continue;
+    if (!choice.pixel) {
+      tolerance[object.profile] = choice.value;
+      continue;
+    }
+    // The object's bounding sphere: the profile's box about its middle height, scaled and placed.
+    double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
+    for (const Point2& p : profile.profile.points()) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+    const io::SceneTransform& t = object.transform;
+    const double scale = std::max({t.scale[0], t.scale[1], t.scale[2]});
+    const Vec3d middle = rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
+    const double radius = scale * std::hypot(rMax, 0.5 * (zHigh - zLow));
+    double distance = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double d = t.translate[i] + middle[i] - scene.camera.from[i];
+      distance += d * d;
+    }
+    distance = std::sqrt(distance) - radius;
+    // Inside the sphere the object may come arbitrarily near: nothing coarser than exact will do.
+    const double footprint = distance > 0 ? distance * pixelAngle / scale : 0;
+    tolerance[object.profile] = std::min(tolerance[object.profile], footprint);
+  }
+  std::vector<CurvePolyline> polylines;
+  for (std::size_t i = 0; i < scene.profiles.size(); ++i) {
+    io::SceneProfile& profile = scene.profiles[i];
+    if (!profile.spline || !(tolerance[i] > 0 && tolerance[i] < HUGE_VAL)) continue;
+    // A footprint below 2^-30 of the curve's size (a camera almost touching it) asks for what
+    // exact tracing gives anyway; a tolerance the user gave is taken as it is (and may be refused).
+    double size = 0;
+    for (const Point2& p : profile.spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+    if (choice.pixel && tolerance[i] < 0x1p-30 * size) continue;
+    try {
+      profile.profile = Profile::fromCurve(*profile.spline, tolerance[i]);
+    } catch (const std::invalid_argument& error) {
+      throw std::runtime_error("--tolerance: profile \"" + profile.name + "\": " + error.what());
+    }
+    profile.spline.reset();
+    profile.tolerance = tolerance[i];
+    polylines.push_back({profile.name, tolerance[i], profile.profile.points().size()});
+  }
+  return polylines;
+}
+
+}  // namespace revolve::render

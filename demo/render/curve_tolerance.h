@@ -1,0 +1,36 @@
+// revolve-render --tolerance: trace a scene's spline profiles as polylines (Profile::fromCurve)
+// instead of exactly, within a given tolerance or within the smallest pixel footprint at which the
+// camera sees any object made of them.
+#pragma once
+
+#include "io/scene_file.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revolve::render {
+
+struct CurveTolerance {
+  bool pixel = false;  // the pixel footprint at the nearest object using the profile
+  double value = 0;    // else: this tolerance, in each profile's own units (> 0)
+};
+
+// "pixel" or a number > 0; throws std::runtime_error naming the option otherwise.
+CurveTolerance parseCurveTolerance(const std::string& text);
+
+struct CurvePolyline {
+  std::string profile;
+  double tolerance;   // in the profile's units
+  std::size_t points;
+};
+
+// Replaces every exactly traced spline profile used by an object by its polyline within the
+// tolerance (for `pixel`: 2 d tan(fov / 2) / height, d the distance from the camera to the nearest
+// point of the object's bounding sphere, over the object's largest scale; the least over the
+// profile's objects). A profile seen from inside an object's bounding sphere, or whose footprint is
+// below 2^-30 of its size, stays exact. Throws
+// std::runtime_error naming the profile when its polyline is not a valid profile.
+std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& tolerance, int height);
+
+}  // namespace revolve::render

@@ -1,0 +1,44 @@
+// Arc length of a cubic Bezier part by Gauss-Legendre quadrature of |c'(u)|, and v at a hit from a
+// table of it. A monotone part turns by less than a right angle (its tangent keeps to one
+// quadrant), so |c'| is smooth on it and a few nodes integrate it to rounding.
+#pragma once
+
+#include "util/isa.h"
+
+#include "curve/cubic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace revolve::detail {
+inline namespace REVOLVE_ISA {
+
+// The arc length from u = a to u = b (five-point rule, exact for |c'| of degree 9).
+inline double arcLengthBetween(const double r[4], const double z[4], double a, double b) noexcept {
+  constexpr double kNodes[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+  constexpr double kWeights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                                  0.2369268850561891};
+  const double half = 0.5 * (b - a), middle = 0.5 * (a + b);
+  double sum = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    const double u = middle + half * kNodes[i];
+    const double dr = cubicDerivative(r, u), dz = cubicDerivative(z, u);
+    sum += kWeights[i] * std::sqrt(dr * dr + dz * dz);  // coordinates within 2^+-60: no overflow or underflow
+  }
+  return half * sum;
+}
+
+// v at u from a table of v and dv/du at `steps` equal steps of [0, 1], interleaved: cubic Hermite
+// interpolation (the table is made fine enough for it: arc_table.h).
+inline double hermiteAt(const double* table, std::uint32_t steps, double u) noexcept {
+  const double x = std::clamp(u, 0.0, 1.0) * steps;
+  const std::uint32_t k = std::min(std::uint32_t(x), steps - 1);
+  const double t = x - k, h = 1.0 / steps;
+  const double t2 = t * t, t3 = t2 * t;
+  const double* at = table + 2 * k;
+  return (2 * t3 - 3 * t2 + 1) * at[0] + (t3 - 2 * t2 + t) * h * at[1] + (-2 * t3 + 3 * t2) * at[2] + (t3 - t2) * h * at[3];
+}
+
+}  // namespace REVOLVE_ISA
+}  // namespace revolve::detail

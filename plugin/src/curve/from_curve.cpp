@@ -1,0 +1,177 @@
+// Profile::fromCurve: the fewest polyline points within a tolerance of a spline, chosen greedily,
+// each chord reaching as far along the curve as its exact chord error allows.
+#include <revolve/revolve.h>
+
+#include "curve/cubic.h"
+#include "util/format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace revolve {
+namespace {
+
+// A position on the curve: piece index plus parameter, as one number T in [0, pieces].
+class CurveWalk {
+ public:
+  explicit CurveWalk(const Spline& curve) : bezier_(curve.bezier()), pieces_(curve.pieceCount()) {}
+
+  std::size_t pieces() const { return pieces_; }
+
+  // Whether the curve turns a corner where piece k - 1 ends and piece k begins: the tangents
+  // (towards the first control point apart from the join) differ by more than the rounding of the
+  // control points (8 u in the sine of their angle), or point against each other.
+  bool cornerAt(std::size_t k) const {
+    const Point2* before = &bezier_[3 * k - 3];
+    const Point2* after = &bezier_[3 * k];
+    const auto direction = [](Point2 from, Point2 a, Point2 b, Point2 c) {
+      for (const Point2 p : {a, b, c}) {
+        if (p.r != from.r || p.z != from.z) return Point2{p.r - from.r, p.z - from.z};
+      }
+      return Point2{0.0, 0.0};
+    };
+    const Point2 in = direction(before[3], before[2], before[1], before[0]);  // backwards along piece k - 1
+    const Point2 out = direction(after[0], after[1], after[2], after[3]);
+    const double cross = in.r * out.z - in.z * out.r, dot = in.r * out.r + in.z * out.z;
+    // Smooth when `in` and `out` point opposite ways (the curve goes straight on).
+    return !(dot < 0.0 && std::abs(cross) <= 8.0 * 0x1p-53 * std::hypot(in.r, in.z) * std::hypot(out.r, out.z));
+  }
+
+  Point2 at(double T) const {
+    const auto [k, u] = split(T);
+    return pieceAt(k, u);
+  }
+
+  // The largest distance from the line through at(Ta) and at(Tb) of the arc between them, or
+  // infinity when the arc's tangent somewhere fails to point along the chord (then the arc is not
+  // a graph over the chord, and its distance from the chord segment is not its distance from the line).
+  double chordError(double Ta, double Tb) const {
+    const Point2 a = at(Ta), b = at(Tb);
+    const double er = b.r - a.r, ez = b.z - a.z, length = std::hypot(er, ez);
+    if (!(length > 0.0)) return std::numeric_limits<double>::infinity();
+    const double ur = er / length, uz = ez / length;
+    const auto [k0, u0] = split(Ta);
+    const auto [k1, u1] = split(Tb);
+    double worst = 0.0;
+    for (std::size_t k = k0; k <= k1 && k < pieces_; ++k) {
+      const double from = k == k0 ? u0 : 0.0, to = k == k1 ? u1 : 1.0;
+      if (!(to > from)) continue;
+      const Point2* c = &bezier_[3 * k];
+      const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r}, z[4] = {c[0].z, c[1].z, c[2].z, c[3].z};
+      double rs[4], zs[4];
+      detail::cubicRestricted(r, from, to, rs);
+      detail::cubicRestricted(z, from, to, zs);
+      // Along the chord: the tangent's component c'(t) . u, a quadratic with Bernstein coefficients
+      // 3 (c[i+1] - c[i]) . u, must stay >= 0 (zero at most at an end or a point: a repeated
+      // control point), so that the arc's projection on the chord moves forward throughout.
+      const double d0 = (rs[1] - rs[0]) * ur + (zs[1] - zs[0]) * uz, d1 = (rs[2] - rs[1]) * ur + (zs[2] - zs[1]) * uz,
+                   d2 = (rs[3] - rs[2]) * ur + (zs[3] - zs[2]) * uz;
+      const double infinity = std::numeric_limits<double>::infinity();
+      if (!(d0 >= 0.0 && d2 >= 0.0) || (d0 == 0.0 && d1 == 0.0 && d2 == 0.0)) return infinity;
+      const double curvature = d0 - 2.0 * d1 + d2;  // the quadratic's leading coefficient
+      if (curvature > 0.0) {
+        const double t = (d0 - d1) / curvature;  // its minimum, when inside (0, 1)
+        if (t > 0.0 && t < 1.0 && !(d0 * (1 - t) * (1 - t) + 2 * d1 * t * (1 - t) + d2 * t * t > 0.0)) return infinity;
+      }
+      // Across the chord: the signed distance cross(u, c(t) - a), a cubic; its largest magnitude is
+      // at an end or where its derivative changes sign.
+      double g[4];
+      for (int i = 0; i < 4; ++i) g[i] = ur * (zs[i] - a.z) - uz * (rs[i] - a.r);
+      worst = std::max({worst, std::abs(g[0]), std::abs(g[3])});
+      double turns[2];
+      for (int i = 0, count = detail::derivativeSignChanges(g, turns); i < count; ++i) {
+        worst = std::max(worst, std::abs(detail::cubicAt(g, turns[i])));
+      }
+    }
+    return worst;
+  }
+
+ private:
+  std::pair<std::size_t, double> split(double T) const {
+    if (T >= double(pieces_)) return {pieces_ - 1, 1.0};
+    const auto k = static_cast<std::size_t>(T);
+    return {k, T - double(k)};
+  }
+  Point2 pieceAt(std::size_t k, double u) const {
+    const Point2* c = &bezier_[3 * k];
+    const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r}, z[4] = {c[0].z, c[1].z, c[2].z, c[3].z};
+    return {detail::cubicAt(r, u), detail::cubicAt(z, u)};
+  }
+
+  std::span<const Point2> bezier_;
+  std::size_t pieces_;
+};
+
+}  // namespace
+
+Profile Profile::fromCurve(const Spline& curve, double tolerance) {
+  if (!(tolerance > 0.0 && tolerance < HUGE_VAL)) {
+    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + ": must be a finite number > 0");
+  }
+  if (curve.kind() == SplineKind::linear) return Profile(curve.points());
+  double extent = 0.0;
+  for (const Point2& p : curve.bezier()) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
+  // Chords are computed in double: below 2^-40 of the extent a chord error is mostly rounding, and
+  // the walk would crawl.
+  if (tolerance < 0x1p-40 * extent) {
+    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + " is below 2^-40 of the curve's extent " +
+                                detail::formatNumber(extent) + ", finer than double-precision chords resolve");
+  }
+  const CurveWalk walk(curve);
+  const double last = double(walk.pieces());
+  // Chords may span smooth joins but not corners, which stay vertices (a rim stays sharp).
+  std::vector<double> corners;
+  for (std::size_t k = 1; k < walk.pieces(); ++k) {
+    if (walk.cornerAt(k)) corners.push_back(double(k));
+  }
+  corners.push_back(last);
+  std::vector<Point2> points{walk.at(0.0)};
+  double T = 0.0;
+  std::size_t nextCorner = 0;
+  while (T < last) {
+    while (corners[nextCorner] <= T) ++nextCorner;
+    const double end = corners[nextCorner];
+    if (walk.chordError(T, end) <= tolerance) {
+      T = end;
+    } else {
+      // Gallop over whole pieces, then bisect for the farthest reach the tolerance allows. A chord
+      // is only ever taken where its error was computed within the tolerance.
+      double good = T, bad = end;
+      for (double step = 1.0;; step *= 2.0) {
+        const double next = std::floor(T) + step;
+        if (next >= end) break;
+        if (walk.chordError(T, next) <= tolerance) {
+          good = next;
+        } else {
+          bad = next;
+          break;
+        }
+      }
+      while (bad - good > 0x1p-44 * std::max(1.0, bad)) {
+        const double middle = 0.5 * (good + bad);
+        (walk.chordError(T, middle) <= tolerance ? good : bad) = middle;
+      }
+      if (good == T) {
+        // Even the shortest chord tried fails (a tolerance below the curve's rounding): step on.
+        good = std::min(end, std::nextafter(bad, end));
+      }
+      T = good;
+    }
+    points.push_back(walk.at(T));
+    if (points.size() > kMaxPoints) {
+      throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + " needs more than " +
+                                  std::to_string(kMaxPoints) + " points");
+    }
+  }
+  try {
+    return Profile(points);
+  } catch (const ProfileError& error) {
+    throw ProfileError(error.rule(), 0,
+                       "the polyline within " + detail::formatNumber(tolerance) + " of the " + splineKindName(curve.kind()) +
+                           " spline is not a valid profile (" + error.what() + "); use a smaller tolerance");
+  }
+}
+
+}  // namespace revolve

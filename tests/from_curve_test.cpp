@@ -1,0 +1,134 @@
+// Profile::fromCurve: the polyline stays within its tolerance of the curve (measured here by dense
+// sampling against the polyline, and by the long-double oracle's distance from the polyline's
+// points to the curve), spends no points on straight runs, and needs no more points than the chords
+// of a circle need (the fewest, in closed form).
+#include "support/curve_reference.h"
+#include "support/spline_profiles.h"
+
+#include <revolve/revolve.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace revolve {
+namespace {
+
+double pointSegmentDistance(Point2 p, Point2 a, Point2 b) {
+  const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez;
+  const double t = length2 > 0 ? std::clamp(((p.r - a.r) * er + (p.z - a.z) * ez) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.r - a.r - t * er, p.z - a.z - t * ez);
+}
+
+// The largest distance from the curve (sampled `perPiece` times a piece) to the polyline.
+double curveToPolyline(const Spline& spline, std::span<const Point2> polyline, int perPiece) {
+  double worst = 0;
+  for (std::size_t piece = 0; piece < spline.pieceCount(); ++piece) {
+    for (int k = 0; k <= perPiece; ++k) {
+      const Point2 p = spline.at(piece, double(k) / perPiece);
+      double best = INFINITY;
+      for (std::size_t i = 0; i + 1 < polyline.size(); ++i) best = std::min(best, pointSegmentDistance(p, polyline[i], polyline[i + 1]));
+      worst = std::max(worst, best);
+    }
+  }
+  return worst;
+}
+
+TEST(FromCurveTest, EveryPolylineStaysWithinItsTolerance) {
+  for (const testing::NamedSpline& named : testing::closedSplines()) {
+    const Spline spline(named.kind, named.points);
+    for (const double tolerance : {1e-2, 1e-3, 1e-5}) {
+      SCOPED_TRACE(named.name + ", tolerance " + std::to_string(tolerance));
+      const Profile polyline = Profile::fromCurve(spline, tolerance);
+      const std::span<const Point2> p = polyline.points();
+      EXPECT_LE(curveToPolyline(spline, p, 200), tolerance * (1 + 1e-9));
+      // And the other way: the polyline's points (vertices and chord middles) lie that close to the curve.
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+        for (const double f : {0.0, 0.5}) {
+          const double r = p[i].r + f * (p[i + 1].r - p[i].r), z = p[i].z + f * (p[i + 1].z - p[i].z);
+          EXPECT_LE(double(reference::curveMeridianDistance(spline.bezier(), r, 0, z)), tolerance * (1 + 1e-9));
+        }
+      }
+      EXPECT_EQ(polyline.closed(), spline.closed());
+      // The ends are the curve's own.
+      EXPECT_EQ(p.front().r, spline.bezier().front().r);
+      EXPECT_EQ(p.back().z, spline.bezier().back().z);
+    }
+  }
+}
+
+TEST(FromCurveTest, StraightRunsGetNoPoints) {
+  // A capped cylinder of straight cubic pieces, each with its inner points on the chord (off the
+  // thirds, so its parametrisation is not uniform): the polyline is its four corners.
+  const std::vector<Point2> points{{0, 0},   {0.1, 0},   {0.45, 0},   {0.5, 0},  {0.5, 0.1}, {0.5, 0.9},
+                                   {0.5, 1}, {0.3, 1},   {0.25, 1},   {0, 1}};
+  const Profile polyline = Profile::fromCurve(Spline(SplineKind::bezier, points), 1e-9);
+  const std::vector<Point2> corners{{0, 0}, {0.5, 0}, {0.5, 1}, {0, 1}};
+  ASSERT_EQ(polyline.points().size(), corners.size());
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    EXPECT_EQ(polyline.points()[i].r, corners[i].r);
+    EXPECT_EQ(polyline.points()[i].z, corners[i].z);
+  }
+  // Two collinear straight pieces in a row merge into one chord.
+  const Profile merged = Profile::fromCurve(Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0, 0.1}, {0, 0.2}, {0, 0.3}, {0, 0.5}, {0, 0.7}, {0, 1}}), 1e-9);
+  EXPECT_EQ(merged.points().size(), 2u);
+}
+
+TEST(FromCurveTest, ACircleGetsTheFewestChords) {
+  // Chords of a circle of radius R whose sagitta R (1 - cos(phi / 2)) is within the tolerance
+  // span at most phi = 2 acos(1 - tolerance / R): a half circle needs ceil(pi / phi) of them. The
+  // cubic arcs lie within 1e-9 of the circle, far below the tolerances.
+  const double radius = 0.5;
+  const Spline sphere(SplineKind::bezier, testing::bezierSphere(radius, 16));
+  ASSERT_LT(testing::arcError(radius, std::numbers::pi / 16), 1e-9);
+  for (const double tolerance : {1e-2, 1e-3, 1e-4, 1e-5}) {
+    const double phi = 2 * std::acos(1 - tolerance / radius);
+    const auto fewest = std::size_t(std::ceil(std::numbers::pi / phi));
+    const Profile polyline = Profile::fromCurve(sphere, tolerance);
+    // Greedy chords reach as far as the tolerance allows; only the last one may be short.
+    EXPECT_LE(polyline.segmentCount(), fewest + 1) << tolerance;
+    EXPECT_GE(polyline.segmentCount(), fewest) << tolerance;
+  }
+}
+
+TEST(FromCurveTest, NeedsFewerPointsThanEqualParameterSteps) {
+  // Equal steps of each piece's parameter, refined until they meet the same tolerance, against the
+  // adaptive polyline: the bottle's straight body and neck cost equal steps points, and adaptive none.
+  for (const testing::NamedSpline& named : testing::closedSplines()) {
+    const Spline spline(named.kind, named.points);
+    const double tolerance = 1e-4;
+    const std::size_t adaptive = Profile::fromCurve(spline, tolerance).points().size();
+    int steps = 1;
+    std::vector<Point2> uniform;
+    do {
+      steps *= 2;
+      uniform = {spline.at(0, 0.0)};
+      for (std::size_t piece = 0; piece < spline.pieceCount(); ++piece) {
+        for (int k = 1; k <= steps; ++k) uniform.push_back(spline.at(piece, double(k) / steps));
+      }
+    } while (curveToPolyline(spline, uniform, 200) > tolerance);
+    EXPECT_LT(adaptive, uniform.size()) << named.name;
+  }
+}
+
+TEST(FromCurveTest, RefusesBadTolerancesAndInvalidPolylines) {
+  const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4));
+  for (const double bad : {0.0, -1e-3, double(NAN), double(INFINITY)}) EXPECT_THROW(Profile::fromCurve(sphere, bad), std::invalid_argument) << bad;
+  EXPECT_THROW(Profile::fromCurve(sphere, 1e-14), std::invalid_argument);  // below 2^-40 of the extent
+  // A wall 1e-3 thick, bent: chords of tolerance 0.05 cut through it and cross each other.
+  const Spline thin(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0.6, 0}, {0.6, 1}, {0.3, 1}, {0.6 - 1e-3, 1 - 1e-3}, {0.6 - 1e-3, 1e-3}, {0, 1e-3}});
+  try {
+    Profile::fromCurve(thin, 0.05);
+    ADD_FAILURE() << "no ProfileError";
+  } catch (const ProfileError& error) {
+    EXPECT_NE(std::string(error.what()).find("use a smaller tolerance"), std::string::npos) << error.what();
+  }
+  EXPECT_NO_THROW(Profile::fromCurve(thin, 1e-5));
+  // A linear spline is its own polyline.
+  const std::vector<Point2> points{{0, 0}, {1, 0}, {1, 1}};
+  EXPECT_EQ(Profile::fromCurve(Spline(SplineKind::linear, points), 1.0).points().size(), 3u);
+}
+
+}  // namespace
+}  // namespace revolve

@@ -1,0 +1,262 @@
+// revolve::Spline: every validation rule's message, and the conversion of each kind to cubic Bezier
+// pieces checked against the kind's definition (the points it passes through, its tangents, its
+// continuity and end conditions), computed here apart from the library's conversion.
+#include "support/spline_profiles.h"
+
+#include <revolve/revolve.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace revolve {
+namespace {
+
+using Rule = ProfileError::Rule;
+
+// The ProfileError a spline of these points throws (fails the test if none).
+ProfileError errorOf(SplineKind kind, std::vector<Point2> points) {
+  try {
+    const Spline spline(kind, points);
+  } catch (const ProfileError& error) {
+    return error;
+  }
+  ADD_FAILURE() << "no ProfileError";
+  return ProfileError(Rule::tooFewPoints, 0, "");
+}
+
+void expectError(SplineKind kind, std::vector<Point2> points, Rule rule, std::size_t index, const std::string& words) {
+  const ProfileError error = errorOf(kind, std::move(points));
+  EXPECT_EQ(error.rule(), rule) << error.what();
+  EXPECT_EQ(error.index(), index) << error.what();
+  EXPECT_NE(std::string(error.what()).find(words), std::string::npos) << error.what();
+  EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << "one line: " << error.what();
+}
+
+TEST(SplineTest, KindNamesReadBack) {
+  for (const SplineKind kind : {SplineKind::linear, SplineKind::quadratic, SplineKind::bezier, SplineKind::catmullRom,
+                                SplineKind::natural}) {
+    EXPECT_EQ(splineKindNamed(splineKindName(kind)), kind);
+  }
+  EXPECT_EQ(std::string(splineKindName(SplineKind::catmullRom)), "catmull-rom");
+  EXPECT_FALSE(splineKindNamed("cubic").has_value());
+  EXPECT_FALSE(splineKindNamed("Bezier").has_value());
+}
+
+TEST(SplineTest, PointCountsFollowTheKind) {
+  expectError(SplineKind::bezier, {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 2}}, Rule::badPointCount, 4, "3n + 1");
+  expectError(SplineKind::bezier, {{0, 0}, {1, 0}, {1, 1}}, Rule::badPointCount, 2, "3n + 1");
+  expectError(SplineKind::quadratic, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, Rule::badPointCount, 3, "2n + 1");
+  expectError(SplineKind::quadratic, {{0, 0}}, Rule::badPointCount, 0, "2n + 1");
+  expectError(SplineKind::catmullRom, {{0, 0}}, Rule::tooFewPoints, 0, "at least 2");
+  expectError(SplineKind::natural, {}, Rule::tooFewPoints, 0, "at least 2");
+  EXPECT_NO_THROW(Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}));
+  EXPECT_NO_THROW(Spline(SplineKind::quadratic, std::vector<Point2>{{0, 0}, {1, 0}, {0, 1}}));
+}
+
+TEST(SplineTest, PointsMustBeFiniteAndInRange) {
+  expectError(SplineKind::natural, {{0, 0}, {NAN, 1}, {0, 2}}, Rule::nonFinite, 1, "spline point 1");
+  expectError(SplineKind::bezier, {{0, 0}, {1, INFINITY}, {1, 1}, {0, 1}}, Rule::nonFinite, 1, "finite");
+  expectError(SplineKind::catmullRom, {{0, 0}, {0x1p61, 1}}, Rule::outOfRange, 1, "2^60");
+  expectError(SplineKind::natural, {{0, 0}, {1e-300, 1e-300}}, Rule::outOfRange, 0, "below 2^-60");
+}
+
+TEST(SplineTest, RadiusMustBeNonNegativeWhereTheCurvePasses) {
+  expectError(SplineKind::catmullRom, {{0, 0}, {-0.1, 1}, {0, 2}}, Rule::negativeRadius, 1, "r must be >= 0");
+  expectError(SplineKind::bezier, {{0, 0}, {1, 0}, {1, 1}, {-0.5, 1}}, Rule::negativeRadius, 3, "spline point 3");
+  // A control point off the curve may lie beyond the axis while the curve stays on its side.
+  EXPECT_NO_THROW(Spline(SplineKind::bezier, std::vector<Point2>{{0.5, 0}, {-0.1, 0.3}, {-0.1, 0.7}, {0.5, 1}}));
+}
+
+TEST(SplineTest, CurvesCrossingTheAxisAreRefused) {
+  // r(u) = 0.5 (1 - u)^3 + 3 (1 - u)^2 u (-1) + 3 (1 - u) u^2 (-1) + 0.5 u^3 reaches -0.25 at u = 1/2.
+  expectError(SplineKind::bezier, {{0.5, 0}, {-1, 0.3}, {-1, 0.7}, {0.5, 1}}, Rule::crossesAxis, 0, "crosses the axis");
+  // A quadratic from the axis heading into r < 0.
+  expectError(SplineKind::quadratic, {{0, 0}, {-0.5, 0.5}, {0.2, 1}}, Rule::crossesAxis, 0, "r = -");
+  // An interpolating curve overshooting the axis between points near it.
+  expectError(SplineKind::natural, {{1, 0}, {0.001, 0.1}, {1, 0.2}, {0.001, 0.3}, {1, 0.4}}, Rule::crossesAxis, 0,
+              "crosses the axis");
+}
+
+TEST(SplineTest, InterpolatingKindsRefuseRepeatedPoints) {
+  expectError(SplineKind::catmullRom, {{0, 0}, {1, 1}, {1, 1}, {0, 2}}, Rule::segmentTooShort, 2, "repeats point 1");
+  expectError(SplineKind::natural, {{0, 0}, {0, 0}, {0, 2}}, Rule::segmentTooShort, 1, "chords");
+  // Bezier kinds take repeated control points: a piece whose inner points repeat its ends is straight.
+  EXPECT_NO_THROW(Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0, 0}, {1, 1}, {1, 1}}));
+  expectError(SplineKind::bezier, {{0, 0}, {1, 1}, {1, 1}, {1, 1}, {1, 1}, {1, 1}, {1, 1}}, Rule::segmentTooShort, 3,
+              "below 2^-60");
+}
+
+TEST(SplineTest, SelfIntersectionsAreRefused) {
+  // Two pieces crossing like an X.
+  expectError(SplineKind::bezier, {{0, 0}, {0.3, 0.3}, {0.6, 0.6}, {1, 1}, {1, 0.6}, {0.4, 0.3}, {0, 1}},
+              Rule::selfIntersecting, 0, "cross or touch");
+  // One piece looping over itself.
+  expectError(SplineKind::bezier, {{0.5, 0}, {2, 1}, {-0.5 + 0.5, 1}, {1.5, 0}}, Rule::selfIntersecting, 0,
+              "crosses or touches itself");
+  // A cusp: the curve turns back on itself at a join.
+  expectError(SplineKind::bezier, {{0, 0}, {0.3, 0.3}, {0.6, 0.6}, {1, 1}, {0.7, 0.7}, {0.4, 0.4}, {0.2, 0.2}},
+              Rule::selfIntersecting, 0, "cusp");
+  // Touching: the end of a hook resting on the curve.
+  expectError(SplineKind::bezier, {{0, 0}, {0.3, 0}, {0.7, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 0}},
+              Rule::selfIntersecting, 0, "cross or touch");
+}
+
+TEST(SplineTest, CurvesRunningWithinRoundingOfThemselvesAreRefusedQuickly) {
+  // Found by fuzzing: quadratic pieces folding up and down along the axis, 1e-12 apart over much of
+  // their length (2^-39 of the extent), where sub-parts separate only when about that small: the
+  // check used to subdivide without end; it must refuse them (and end).
+  expectError(SplineKind::quadratic,
+              {{0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, -1.3642420526593924e-11},
+               {0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, 0.0},
+               {0.0, 0.500000000001819}, {0.0, 0.0625}, {0.500000000001819, 0.0}},
+              Rule::selfIntersecting, 0, "run that close for long");
+}
+
+TEST(SplineTest, NearlyTouchingPartsAndSharpCornersAreValid) {
+  // A thin wall: up the outside and down the inside 1e-6 apart, a sharp rim between.
+  EXPECT_NO_THROW(Spline(SplineKind::bezier,
+                         std::vector<Point2>{{0, 0}, {0.3, 0}, {0.5, 0.4}, {0.5, 1}, {0.5 - 1e-6, 0.6}, {0.3 - 1e-6, 1e-6}, {0, 1e-6}}));
+  // Every closed test spline.
+  for (const testing::NamedSpline& s : testing::closedSplines()) {
+    EXPECT_NO_THROW({
+      const Spline spline(s.kind, s.points);
+      EXPECT_TRUE(spline.closed()) << s.name;
+    }) << s.name;
+  }
+}
+
+// Bezier evaluation written here: the test's own.
+Point2 bezierAt(const Point2* c, double u) {
+  const double v = 1 - u;
+  const double b[4] = {v * v * v, 3 * v * v * u, 3 * v * u * u, u * u * u};
+  return {b[0] * c[0].r + b[1] * c[1].r + b[2] * c[2].r + b[3] * c[3].r, b[0] * c[0].z + b[1] * c[1].z + b[2] * c[2].z + b[3] * c[3].z};
+}
+
+TEST(SplineTest, QuadraticPiecesAreRaisedToCubicsOfTheSameCurve) {
+  const std::vector<Point2> points{{0, 0}, {1, 0.5}, {0.5, 1}, {0.2, 1.5}, {0.7, 2}};
+  const Spline spline(SplineKind::quadratic, points);
+  ASSERT_EQ(spline.pieceCount(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(spline.pieceStart(i), 2 * i);
+    for (double u = 0; u <= 1; u += 0.125) {
+      const Point2 a = points[2 * i], m = points[2 * i + 1], b = points[2 * i + 2];
+      const double v = 1 - u;
+      const Point2 expected{v * v * a.r + 2 * u * v * m.r + u * u * b.r, v * v * a.z + 2 * u * v * m.z + u * u * b.z};
+      const Point2 got = spline.at(i, u);
+      EXPECT_NEAR(got.r, expected.r, 1e-15);
+      EXPECT_NEAR(got.z, expected.z, 1e-15);
+    }
+  }
+}
+
+TEST(SplineTest, CatmullRomPassesThroughItsPointsWithCentripetalTangents) {
+  const std::vector<Point2> p{{0, 0}, {0.3, 0.05}, {0.5, 0.4}, {0.35, 0.8}, {0.4, 1.2}};
+  const Spline spline(SplineKind::catmullRom, p);
+  ASSERT_EQ(spline.pieceCount(), 4u);
+  const std::span<const Point2> c = spline.bezier();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(c[3 * i].r, p[i].r);
+    EXPECT_EQ(c[3 * i].z, p[i].z);
+  }
+  // The tangent at an inner point, from the knots t_{i+1} - t_i = |p_{i+1} - p_i|^(1/2) (Barry and
+  // Goldman's pyramid differentiated at t_i), equals 3 (c_{3i+1} - c_{3i}) / (t_{i+1} - t_i).
+  const auto d = [&](std::size_t i) { return std::sqrt(std::hypot(p[i + 1].r - p[i].r, p[i + 1].z - p[i].z)); };
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    const double d0 = d(i - 1), d1 = d(i);
+    for (int axis = 0; axis < 2; ++axis) {
+      const auto x = [&](std::size_t k) { return axis == 0 ? p[k].r : p[k].z; };
+      const auto y = [&](std::size_t k) { return axis == 0 ? c[k].r : c[k].z; };
+      const double tangent = (x(i) - x(i - 1)) / d0 - (x(i + 1) - x(i - 1)) / (d0 + d1) + (x(i + 1) - x(i)) / d1;
+      EXPECT_NEAR(3 * (y(3 * i + 1) - y(3 * i)) / d1, tangent, 1e-12);
+      EXPECT_NEAR(3 * (y(3 * i) - y(3 * i - 1)) / d0, tangent, 1e-12);  // C1 across the join
+    }
+  }
+  // Open ends leave along the first and last chords, a third of the way.
+  EXPECT_NEAR(c[1].r, p[0].r + (p[1].r - p[0].r) / 3, 1e-15);
+  EXPECT_NEAR(c[1].z, p[0].z + (p[1].z - p[0].z) / 3, 1e-15);
+  EXPECT_NEAR(c[c.size() - 2].z, p.back().z + (p[p.size() - 2].z - p.back().z) / 3, 1e-15);
+}
+
+// Second derivative of piece i at an end (u = 0 or 1), per unit chord parameter (piece length h).
+Point2 secondDerivative(std::span<const Point2> c, std::size_t i, bool atEnd, double h) {
+  const Point2* q = &c[3 * i];
+  const Point2 a = atEnd ? q[1] : q[0], b = atEnd ? q[2] : q[1], e = atEnd ? q[3] : q[2];
+  return {6 * (a.r - 2 * b.r + e.r) / (h * h), 6 * (a.z - 2 * b.z + e.z) / (h * h)};
+}
+
+TEST(SplineTest, NaturalSplineIsC2ThroughItsPointsWithFreeEnds) {
+  const std::vector<Point2> p{{0, 0}, {0.3, 0.05}, {0.5, 0.4}, {0.35, 0.8}, {0.4, 1.2}, {0.1, 1.3}};
+  const Spline spline(SplineKind::natural, p);
+  const std::span<const Point2> c = spline.bezier();
+  const auto h = [&](std::size_t i) { return std::hypot(p[i + 1].r - p[i].r, p[i + 1].z - p[i].z); };
+  for (std::size_t i = 0; i < p.size(); ++i) EXPECT_EQ(c[3 * i].r, p[i].r);
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    // C1 and C2 across each inner point, in the chord-length parameter.
+    EXPECT_NEAR(3 * (c[3 * i].r - c[3 * i - 1].r) / h(i - 1), 3 * (c[3 * i + 1].r - c[3 * i].r) / h(i), 1e-12);
+    const Point2 before = secondDerivative(c, i - 1, true, h(i - 1)), after = secondDerivative(c, i, false, h(i));
+    EXPECT_NEAR(before.r, after.r, 1e-9);
+    EXPECT_NEAR(before.z, after.z, 1e-9);
+  }
+  // Free ends: zero second derivative.
+  const Point2 start = secondDerivative(c, 0, false, h(0)), end = secondDerivative(c, p.size() - 2, true, h(p.size() - 2));
+  EXPECT_NEAR(start.r, 0, 1e-9);
+  EXPECT_NEAR(start.z, 0, 1e-9);
+  EXPECT_NEAR(end.r, 0, 1e-9);
+  EXPECT_NEAR(end.z, 0, 1e-9);
+}
+
+TEST(SplineTest, ClosedInterpolatingSplinesArePeriodic) {
+  std::vector<Point2> p;
+  for (int i = 0; i <= 7; ++i) p.push_back({0.7 + 0.3 * std::cos(i * 2 * M_PI / 7), 0.5 * std::sin(i * 2 * M_PI / 7)});
+  p.back() = p.front();
+  const std::size_t m = p.size() - 1;
+  const auto h = [&](std::size_t i) { return std::hypot(p[i + 1].r - p[i].r, p[i + 1].z - p[i].z); };
+  for (const SplineKind kind : {SplineKind::catmullRom, SplineKind::natural}) {
+    const Spline spline(kind, p);
+    EXPECT_TRUE(spline.closed());
+    const std::span<const Point2> c = spline.bezier();
+    // Across the closing join: the same direction (C1 in the kind's parameter).
+    const Point2 out{c[1].r - c[0].r, c[1].z - c[0].z}, in{c[3 * m].r - c[3 * m - 1].r, c[3 * m].z - c[3 * m - 1].z};
+    EXPECT_NEAR(out.r * in.z - out.z * in.r, 0, 1e-12) << splineKindName(kind);
+    EXPECT_GT(out.r * in.r + out.z * in.z, 0) << splineKindName(kind);
+    if (kind == SplineKind::natural) {  // and, in the chord-length parameter, C1 and C2
+      EXPECT_NEAR(out.r / h(0), in.r / h(m - 1), 1e-12);
+      const Point2 before = secondDerivative(c, m - 1, true, h(m - 1)), after = secondDerivative(c, 0, false, h(0));
+      EXPECT_NEAR(before.r, after.r, 1e-9);
+      EXPECT_NEAR(before.z, after.z, 1e-9);
+    }
+  }
+}
+
+TEST(SplineTest, ALinearSplineIsItsPolyline) {
+  const std::vector<Point2> p{{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Spline spline(SplineKind::linear, p);
+  EXPECT_EQ(spline.points().size(), 4u);  // the repeat dropped, with a warning, as Profile does
+  ASSERT_EQ(spline.warnings().size(), 1u);
+  EXPECT_EQ(spline.pieceCount(), 3u);
+  EXPECT_EQ(spline.pieceStart(2), 3u);
+  expectError(SplineKind::linear, {{0, 0}, {1, 1}, {1, 0}, {0, 1}}, Rule::selfIntersecting, 0, "intersect");
+  const Shape shape(spline);
+  EXPECT_EQ(shape.spline(), nullptr);  // traced as the polyline
+  EXPECT_EQ(shape.profile().points().size(), 4u);
+}
+
+TEST(SplineTest, ShapesReportTheirParts) {
+  const Spline sphere(SplineKind::bezier, testing::bezierSphere(1.0, 4));
+  const Shape shape(sphere);
+  ASSERT_NE(shape.spline(), nullptr);
+  // Each quarter's two arcs are monotone already: the parts are the pieces, the knots their ends.
+  EXPECT_EQ(shape.profile().segmentCount(), 4u);
+  for (std::uint32_t k = 0; k < 4; ++k) EXPECT_EQ(shape.splinePiece(k), k);
+  // A torus circle in 3 arcs of 120 degrees: each arc turns through an extremum of r or z and splits.
+  const Shape torus{Spline(SplineKind::bezier, testing::bezierTorus(0.6, 0.25, 3))};
+  EXPECT_EQ(torus.profile().segmentCount(), 6u);
+  // Arc length: a quarter of the sphere's circumference over its half.
+  EXPECT_NEAR(shape.profile().arcLength().back(), M_PI, 1e-5);
+  EXPECT_THROW(Shape(sphere, BuildOptions{Method::kajiya}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace revolve
