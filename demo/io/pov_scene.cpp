@@ -109,12 +109,19 @@ class Writer {
   void checkLatheLimits() const {
     for (const std::size_t p : usedProfiles()) {
       const SceneProfile& profile = scene_.profiles[p];
-      const std::size_t points = profile.profile.points().size();
+      const std::size_t points = lathePointCount(profile);
       if (points > kPovMaxLathePoints) {
         throw SceneError(scene_.file + ": profiles." + profile.name + ": " + std::to_string(points) +
-                         " points: a POV-Ray lathe holds at most 32767 (its point count is a 16-bit integer)");
+                         (profile.spline ? " points (its bezier_spline, four a piece)" : " points") +
+                         ": a POV-Ray lathe holds at most 32767 (its point count is a 16-bit integer)");
       }
     }
+  }
+
+  // A spline traced exactly is written as the same curve, POV-Ray's bezier_spline (four points a
+  // piece, neighbours repeating their shared end); every other profile as its polyline.
+  static std::size_t lathePointCount(const SceneProfile& profile) {
+    return profile.spline ? 4 * profile.spline->pieceCount() : profile.profile.points().size();
   }
 
   std::set<std::size_t> usedProfiles() const {
@@ -225,10 +232,19 @@ class Writer {
   void lathes(std::ostream& out) const {
     for (const std::size_t p : usedProfiles()) {
       const SceneProfile& profile = scene_.profiles[p];
-      const auto points = profile.profile.points();
-      out << "// profiles." << commentText(profile.name) << "\n#declare " << identifier("Profile", p) << " = lathe {\n  linear_spline "
-          << points.size();
-      for (const Point2& point : points) out << ",\n  <" << number(point.r) << ", " << number(point.z) << ">";
+      out << "// profiles." << commentText(profile.name) << "\n#declare " << identifier("Profile", p) << " = lathe {\n";
+      const auto point = [&](Point2 q) { out << ",\n  <" << number(q.r) << ", " << number(q.z) << ">"; };
+      if (profile.spline) {
+        const auto bezier = profile.spline->bezier();
+        out << "  bezier_spline " << lathePointCount(profile);
+        for (std::size_t piece = 0; piece < profile.spline->pieceCount(); ++piece) {
+          for (std::size_t k = 0; k < 4; ++k) point(bezier[3 * piece + k]);
+        }
+      } else {
+        const auto points = profile.profile.points();
+        out << "  linear_spline " << points.size();
+        for (const Point2& q : points) point(q);
+      }
       out << "\n}\n";
     }
     out << "\n";

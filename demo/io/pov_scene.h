@@ -5,8 +5,10 @@
 // - Axes: POV-Ray's y is revolve's z (up) and its z is revolve's y. The swap turns revolve's
 //   right-handed z-up world into POV-Ray's left-handed y-up one without mirroring the picture, and
 //   it makes each profile a POV-Ray `lathe` (revolved about its y) with the points (r, z) unchanged.
-// - Each profile used by an object becomes one `lathe` with a `linear_spline`; each object places
-//   it with a `matrix` (the object's scale, rotation and translation, axes swapped).
+// - Each profile used by an object becomes one `lathe`: a polyline (or a spline traced as one) a
+//   `linear_spline`, a spline traced exactly the same curve as a `bezier_spline` (its cubic Bézier
+//   pieces, four points each); each object places it with a `matrix` (the object's scale, rotation
+//   and translation, axes swapped).
 // - Quads become `mesh` triangles (0, 1, 2) and (0, 2, 3), one mesh per material, as revolve draws them.
 // - The camera keeps its position, target, up vector and vertical field of view; the horizontal
 //   angle and `right` come from POV-Ray's image_width / image_height, so one file serves every +W +H.

@@ -108,6 +108,28 @@ TEST(PovSceneTest, LathePointsLandWhereRevolvesSurfaceIsAfterTheAxisSwap) {
   EXPECT_EQ(numbersIn(between(pov.text, "matrix <", ">", line)), (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}));
 }
 
+// A spline traced exactly is exported as the same curve: POV-Ray's bezier_spline, four control
+// points a piece (POV-Ray's pieces do not share their ends). A quadratic piece P0 P1 P2 is the
+// cubic P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2 (degree elevation).
+TEST(PovSceneTest, ASplineIsWrittenAsTheSameCurveInBezierPieces) {
+  const std::string scene = std::regex_replace(
+      kPointScene, std::regex(R"("pot": \{"points": [^}]*\})"),
+      R"("pot": {"spline": "quadratic", "points": [[0, 0], [0.9, 0], [0.6, 0.6], [0.3, 1.2], [0, 1.2]]})");
+  const PovScene pov = povScene(parseScene(scene, "scene.json", "."), {});
+  EXPECT_THAT(pov.text, ::testing::Not(HasSubstr("linear_spline")));
+  const std::vector<double> lathe = numbersIn(between(pov.text, "bezier_spline", "}"));
+  ASSERT_EQ(lathe.size(), 1 + 2 * 8u) << "bezier_spline N, then N = 4 x 2 points";
+  EXPECT_EQ(lathe[0], 8);
+  const double q[2][3][2] = {{{0, 0}, {0.9, 0}, {0.6, 0.6}}, {{0.6, 0.6}, {0.3, 1.2}, {0, 1.2}}};
+  for (int piece = 0; piece < 2; ++piece) {
+    for (int c = 0; c < 2; ++c) {  // r, then z
+      const double p0 = q[piece][0][c], p1 = q[piece][1][c], p2 = q[piece][2][c];
+      const double expected[4] = {p0, p0 + 2.0 / 3 * (p1 - p0), p2 + 2.0 / 3 * (p1 - p2), p2};
+      for (int k = 0; k < 4; ++k) EXPECT_NEAR(lathe[1 + 2 * (4 * piece + k) + c], expected[k], 1e-15) << piece << " " << k << " " << c;
+    }
+  }
+}
+
 TEST(PovSceneTest, CameraAndLightsAreInPovRaysAxesAndLightUnits) {
   const SceneDescription scene = parseScene(kPointScene, "scene.json", ".");
   const PovScene pov = povScene(scene, {});
