@@ -1,9 +1,9 @@
 // The packet set-up (src/kernel/meridian_rays.h) must give each lane the very MeridianRay the
 // single-ray set-up gives, bit for bit: rtcIntersect4/8/16 then find the hits rtcIntersect1 finds.
 #include "kernel/meridian_rays.h"
-#include "shape_impl.h"
-#include "shape_search.h"
-#include "surface_hit.h"
+#include "shape/shape_impl.h"
+#include "shape/shape_search.h"
+#include "shape/surface_hit.h"
 #include "support/test_profiles.h"
 
 #include <gtest/gtest.h>

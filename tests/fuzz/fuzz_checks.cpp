@@ -1,6 +1,6 @@
 #include "fuzz_checks.h"
 
-#include "tessellation.h"
+#include "embree/tessellation.h"
 
 #include <algorithm>
 #include <array>

@@ -2,11 +2,11 @@
 // cone curve. Everything
 // that calls Embree lives here and in ray_callbacks.h (the per-ray callbacks, compiled per
 // instruction set), so that a port to Embree 4 is these two files' work.
-#include "cone_curve.h"
+#include "embree/cone_curve.h"
 #include "embree/payload.h"
 #include "isa/query_kernels.h"
-#include "queries.h"
-#include "tessellation.h"
+#include "shape/queries.h"
+#include "embree/tessellation.h"
 
 #include <cstring>
 #include <stdexcept>

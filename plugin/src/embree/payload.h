@@ -3,7 +3,7 @@
 
 #include <revolve/revolve.h>
 
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 
 #include <atomic>
 #include <cstdint>

@@ -10,8 +10,8 @@
 
 #include "embree/payload.h"
 #include "kernel/meridian_rays.h"
-#include "shape_search.h"
-#include "surface_hit.h"
+#include "shape/shape_search.h"
+#include "shape/surface_hit.h"
 #include "util/isa.h"
 
 #include <embree3/rtcore.h>

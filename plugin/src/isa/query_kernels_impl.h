@@ -4,8 +4,8 @@
 
 #include "embree/ray_callbacks.h"
 #include "isa/query_kernels.h"
-#include "shape_search.h"
-#include "surface_hit.h"
+#include "shape/shape_search.h"
+#include "shape/surface_hit.h"
 #include "util/isa.h"
 
 namespace revolve::detail {

@@ -1,7 +1,7 @@
 // Building a Shape: the local frame, the bounding sphere and box, and the search structures.
 #include "curve/arc_table.h"
 #include "curve/monotone_parts.h"
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 #include "util/rounding.h"
 
 #include <algorithm>

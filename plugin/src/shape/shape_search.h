@@ -12,7 +12,7 @@
 #include "kernel/segment_hits.h"
 #include "mibit/mibit_search.h"
 #include "mibit/wide_search.h"
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 
 #include <cstdint>
 #include <limits>

@@ -1,7 +1,7 @@
 // Queries shared by the public functions and the Embree glue.
 #pragma once
 
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 
 namespace revolve::detail {
 

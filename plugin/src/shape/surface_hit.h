@@ -5,7 +5,7 @@
 
 #include "curve/arc_length.h"
 #include "kernel/meridian_ray.h"
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 #include "util/azimuth.h"
 #include "util/simd.h"
 

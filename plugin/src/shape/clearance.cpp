@@ -4,7 +4,7 @@
 // MIBIT tree's meridian boxes give lower bounds that skip far runs of the profile, best first.
 #include "curve/part_distance.h"
 #include "mibit/best_first.h"
-#include "shape_impl.h"
+#include "shape/shape_impl.h"
 
 #include <algorithm>
 #include <cmath>

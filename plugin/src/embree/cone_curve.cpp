@@ -1,4 +1,4 @@
-#include "cone_curve.h"
+#include "embree/cone_curve.h"
 
 #include "profile/points.h"
 #include "util/format.h"

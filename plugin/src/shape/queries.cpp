@@ -3,7 +3,7 @@
 #include "curve/part_distance.h"
 #include "isa/query_kernels.h"
 #include "mibit/best_first.h"
-#include "queries.h"
+#include "shape/queries.h"
 #include "util/azimuth.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "tessellation.h"
+#include "embree/tessellation.h"
 
 #include <cmath>
 #include <numbers>
