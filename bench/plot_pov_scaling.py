@@ -5,8 +5,9 @@ python3-matplotlib).
     bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
 
 Left axis: each renderer's time for the image (revolve's render time, POV-Ray's Trace Time
-statistic) against the lathe's profile points; right axis: their ratio. Every point is a figure of
-the JSON.
+statistic) against the lathe's profile points; right axis: their ratio. The vase as a spline
+(traced exactly by revolve, a bezier_spline lathe for POV-Ray) is drawn as two stars at its number
+of Bézier pieces. Every point is a figure of the JSON.
 """
 import json
 import sys
@@ -31,7 +32,14 @@ def main():
 
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     ax.plot(points, revolve, color="tab:blue", marker="o", ms=4, label="revolve (MIBIT, wide tree): render time")
-    ax.plot(points, povray, color="tab:red", marker="s", ms=4, label="POV-Ray 3.7 lathe: Trace Time")
+    ax.plot(points, povray, color="tab:red", marker="s", ms=4, label="POV-Ray 3.7 linear_spline lathe: Trace Time")
+    spline = results.get("spline")
+    if spline:
+        pieces = spline["bezier_pieces"]
+        ax.scatter([pieces], [spline["revolve_render_seconds"]["median"]], s=110, marker="*", color="tab:blue", zorder=5,
+                   label=f"revolve, the vase as {pieces} cubic Bézier pieces, exact")
+        ax.scatter([pieces], [spline["povray_trace_seconds"]["median"]], s=110, marker="*", color="tab:red", zorder=5,
+                   label="POV-Ray bezier_spline lathe of the same pieces")
     ax.set_xscale("log", base=2)
     ax.set_yscale("log")
     ax.set_xlabel("profile points of the lathe")

@@ -6,6 +6,7 @@
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "povray.h"
+#include "smooth_spline.h"
 #include "renderer.h"
 #include "scene/embree_scene.h"
 #include "test_shapes.h"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace revolve::bench {
@@ -113,19 +115,26 @@ nlohmann::ordered_json differenceJson(const ImageDifference& d) {
           {"differing_pixels", d.differingPixels}};
 }
 
-// The scaling scene: the vase at `points` profile points, seen whole, one point light.
-io::SceneDescription vaseScene(int points) {
+// The scaling scene: the vase at `points` profile points (or, with `spline`, as that spline traced
+// exactly, exported as the same Bézier pieces), seen whole, one point light.
+io::SceneDescription vaseScene(int points, const std::optional<Spline>& spline = std::nullopt) {
   const SmoothProfile vase = vaseShape();
-  const std::vector<Point2> sampled = vase.sample(points);
   const SmoothProfile::Extent e = vase.extent();
   const double middle = 0.5 * (e.zLow + e.zHigh), height = e.zHigh - e.zLow;
   io::SceneDescription scene;
-  scene.file = "vase (" + std::to_string(points) + " points)";
   scene.camera.from = {0.0, -3.0 * height, middle + 0.8 * height};
   scene.camera.to = {0.0, 0.0, middle};
   scene.camera.up = {0, 0, 1};
   scene.camera.fovDegrees = 24;
-  scene.profiles.push_back({"vase", Profile(sampled), ShadingNormals::kDefaultCreaseDegrees, {}});
+  if (spline) {
+    scene.file = "vase (" + std::to_string(spline->pieceCount()) + " Bezier pieces)";
+    // The polyline beside it is for the tools that need one (io::SceneProfile); it is not traced.
+    scene.profiles.push_back({"vase", Profile::fromCurve(*spline, io::SceneProfile::kDrawingFraction * vase.size()),
+                              ShadingNormals::kDefaultCreaseDegrees, {}, {}, spline, 0});
+  } else {
+    scene.file = "vase (" + std::to_string(points) + " points)";
+    scene.profiles.push_back({"vase", Profile(vase.sample(points)), ShadingNormals::kDefaultCreaseDegrees, {}});
+  }
   io::SceneMaterial clay;
   clay.name = "clay";
   clay.color = {0.7, 0.5, 0.35};
@@ -229,8 +238,16 @@ std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovS
     if (points < 16 || std::size_t(points) > io::kPovMaxLathePoints) {
       throw std::invalid_argument("--points " + std::to_string(points) + ": expected 16 to 32767 (POV-Ray's lathe limit)");
     }
-    const io::SceneDescription description = vaseScene(points);
-    const std::string name = "vase_" + std::to_string(points);
+  }
+  // The polylines at each count, then the spline: the vase's lines and arcs as cubic pieces within
+  // 1e-9 of its size (bench/smooth_spline.h), traced exactly and given to POV-Ray as bezier_spline.
+  const SmoothProfile vase = vaseShape();
+  const Spline spline(SplineKind::bezier, bezierOf(vase, 1e-9 * vase.size()).bezier);
+  for (std::size_t run = 0; run <= settings.points.size(); ++run) {
+    const bool exact = run == settings.points.size();
+    const int points = exact ? int(spline.pieceCount()) : settings.points[run];
+    const io::SceneDescription description = exact ? vaseScene(0, spline) : vaseScene(points);
+    const std::string name = exact ? "vase_spline" : "vase_" + std::to_string(points);
     const std::string file = exportForComparison(description, settings.outDirectory, name, 1, true);
     const scene::EmbreeScene built(description, scene::BuildSettings{});
     const render::RenderSettings render = whitted(settings.size, settings.size, 1, true);
@@ -238,11 +255,12 @@ std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovS
     Renders last;
     PovScalingPoint point;
     point.points = points;
+    point.spline = exact;
     point.timing = timeBoth(description, built, render, povray, request, threads, settings.repetitions, last);
     point.difference = compareImages(last.revolve.image, last.povray.image);
     results.push_back(point);
-    std::fprintf(stderr, "revolve-bench: pov-scaling: %d points: revolve %.4f s, POV-Ray %.3f s\n", points,
-                 point.timing.revolveSeconds, point.timing.povraySeconds);
+    std::fprintf(stderr, "revolve-bench: pov-scaling: %d %s: revolve %.4f s, POV-Ray %.3f s\n", points,
+                 exact ? "Bezier pieces" : "points", point.timing.revolveSeconds, point.timing.povraySeconds);
   }
   return results;
 }
@@ -252,18 +270,26 @@ void printPovScaling(std::FILE* out, const PovScalingSettings& settings, const s
                settings.size, points.empty() ? 0 : points.front().timing.threads, settings.repetitions);
   std::fprintf(out, "%8s %16s %22s %10s %14s\n", "points", "revolve render s", "POV-Ray Trace Time s", "ratio", "mean |d| image");
   for (const PovScalingPoint& p : points) {
+    if (p.spline) continue;
     std::fprintf(out, "%8d %16.5f %22.3f %9.1fx %14.5f\n", p.points, p.timing.revolveSeconds, p.timing.povraySeconds, p.timing.ratio(),
+                 p.difference.meanAbsolute);
+  }
+  for (const PovScalingPoint& p : points) {
+    if (!p.spline) continue;
+    std::fprintf(out, "the vase as %d cubic Bezier pieces, traced exactly; POV-Ray's bezier_spline lathe of the same pieces:\n", p.points);
+    std::fprintf(out, "%8s %16.5f %22.3f %9.1fx %14.5f\n", "spline", p.timing.revolveSeconds, p.timing.povraySeconds, p.timing.ratio(),
                  p.difference.meanAbsolute);
   }
 }
 
 nlohmann::ordered_json povScalingJson(const PovScalingSettings& settings, const std::vector<PovScalingPoint>& points) {
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  nlohmann::ordered_json spline;
   for (const PovScalingPoint& p : points) {
     nlohmann::ordered_json entry = timedJson(p.timing);
-    entry["points"] = p.points;
+    entry[p.spline ? "bezier_pieces" : "points"] = p.points;
     entry["image_difference"] = differenceJson(p.difference);
-    list.push_back(entry);
+    (p.spline ? spline : list.emplace_back()) = entry;
   }
   return {{"settings",
            {{"shape", "vase"},
@@ -275,7 +301,8 @@ nlohmann::ordered_json povScalingJson(const PovScalingSettings& settings, const 
             {"shadows", true},
             {"threads", points.empty() ? 0 : points.front().timing.threads},
             {"repetitions", settings.repetitions}}},
-          {"points", list}};
+          {"points", list},
+          {"spline", spline}};
 }
 
 }  // namespace revolve::bench

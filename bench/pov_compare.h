@@ -9,7 +9,8 @@
 // images compared after matching exposure and written side by side.
 //
 // pov-scaling: one lathe (the benchmark's vase) at 16 to 32,767 profile points, the same camera
-// and light, the trace time of both at each point count.
+// and light, the trace time of both at each point count; then the vase as a spline of cubic Bézier
+// pieces, traced exactly by revolve and by POV-Ray as a bezier_spline lathe of the same pieces.
 #pragma once
 
 #include "image_compare.h"
@@ -65,7 +66,8 @@ struct PovScalingSettings {
 };
 
 struct PovScalingPoint {
-  int points = 0;
+  int points = 0;       // profile points; for the spline, its Bézier pieces
+  bool spline = false;  // the vase as a spline traced exactly (POV-Ray: a bezier_spline lathe)
   TimedRun timing;
   ImageDifference difference;
 };
