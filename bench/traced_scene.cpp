@@ -74,11 +74,13 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
     case MethodKind::sphere: geometry = newAnalyticSphereGeometry(device, sphere_); break;
     case MethodKind::embreeCone:
       coneCurve_ = std::make_unique<ConeCurveGeometry>(device, Profile(profile.sample(config.points)));
+      points_ = config.points;
       break;
     case MethodKind::embreeRoundCurve: {
       auto fit = fitRoundCurve(profile, config.points);
       if (auto* reason = std::get_if<std::string>(&fit)) throw std::invalid_argument(*reason);
       attachRoundCurve(device, scene_, std::get<RoundCurveFit>(fit));
+      points_ = config.points;  // its segments
       break;
     }
     case MethodKind::mesh:
