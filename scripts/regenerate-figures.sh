@@ -3,8 +3,8 @@
 # results (bench/results/). These are the only commands that write into the repository's tracked
 # files; README's examples write under out/.
 # Usage: scripts/regenerate-figures.sh [--benchmarks]
-#   --benchmarks  first measure again: revolve-bench (about 10 minutes on 2 cores) and
-#                 revolve-lidar-bench (about 5), replacing bench/results/; README's tables quote
+#   --benchmarks  first measure again: revolve-bench (about 14 minutes on 2 cores), revolve-lidar-bench
+#                 (about 5), the paper's table and POV-Ray (about 4), replacing bench/results/; README's tables quote
 #                 those files and are then updated by hand. Run it on an otherwise idle machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,13 +26,22 @@ if [[ $benchmarks == yes ]]; then
     | tee bench/results/revolve-bench.txt
   build/bin/revolve-lidar-bench scenes/robot_world.json --poses examples/robot/path.csv \
     --out bench/results/robot/lidar_bench.json
+  build/bin/revolve-bench paper-table --json bench/results/paper-table.json | tee bench/results/paper-table.txt
+  # POV-Ray beside revolve (README, "Against POV-Ray"); these also draw docs/pov_*.png.
+  build/bin/revolve-bench pov --json bench/results/pov-patio.json --figure docs/pov_patio.png | tee bench/results/pov-patio.txt
+  build/bin/revolve-bench pov --scene scenes/vessels.json --json bench/results/pov-vessels.json \
+    --figure docs/pov_vessels.png | tee bench/results/pov-vessels.txt
+  build/bin/revolve-bench pov-scaling --json bench/results/pov-scaling.json | tee bench/results/pov-scaling.txt
 fi
 
 # The patio as scripts/main.sh renders it (README, "revolve-render").
 build/bin/revolve-render scenes/patio.json -o docs/patio.png
+# The still life of spline profiles (README, "revolve-render", "Smooth profiles").
+build/bin/revolve-render scenes/spline_still_life.json -o docs/spline_still_life.png
 # A 2-D scan at the corridor's corner (README, "Robot range-finding"); the scan itself goes to out/.
 build/bin/revolve-lidar scenes/robot_world.json --sensor examples/robot/lidar_2d.json \
   --poses examples/robot/corner.csv -o out/scan.csv --plot docs/robot_scan.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
+bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
 echo "regenerated docs/*.png; look at them before committing"
