@@ -9,7 +9,8 @@ mkdir -p "$scratch/scenes/profiles" "$scratch/examples/robot"
 cp "$source/scenes/make_scenes.py" "$source/scenes/make_robot_world.py" "$scratch/scenes/"
 (cd "$scratch" && python3 scenes/make_scenes.py && python3 scenes/make_robot_world.py)
 status=0
-for file in scenes/patio.json scenes/still_life.json scenes/many.json scenes/robot_world.json scenes/profiles/wine_bottle.csv \
+for file in scenes/patio.json scenes/patio_points.json scenes/still_life.json scenes/spline_still_life.json scenes/vessels.json \
+            scenes/many.json scenes/robot_world.json scenes/profiles/wine_bottle.csv \
             examples/robot/lidar_2d.json examples/robot/lidar_3d.json examples/robot/path.csv examples/robot/corner.csv; do
   if ! cmp -s "$scratch/$file" "$source/$file"; then
     echo "$file: differs from what its generator writes; run scenes/make_*.py and commit the output" >&2
