@@ -6,9 +6,9 @@
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "povray.h"
-#include "smooth_spline.h"
 #include "renderer.h"
 #include "scene/embree_scene.h"
+#include "smooth_spline.h"
 #include "test_shapes.h"
 
 #include <tbb/info.h>
