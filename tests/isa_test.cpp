@@ -14,6 +14,11 @@ namespace {
 
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+bool sameHit(const Hit& a, const Hit& b) {
+  return sameBits(a.t, b.t) && sameBits(a.u, b.u) && sameBits(a.v, b.v) && a.segment == b.segment &&
+         sameBits(a.normal.x, b.normal.x) && sameBits(a.normal.y, b.normal.y) && sameBits(a.normal.z, b.normal.z);
+}
+
 TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
   const detail::QueryKernels* baseline = detail::queryKernelsFor(detail::Isa::sse2);
   const detail::QueryKernels* avx2 = detail::queryKernelsFor(detail::Isa::avx2);
@@ -37,10 +42,7 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
         EXPECT_EQ(statsA.quadratics, statsB.quadratics) << named.name;
         if (!a) continue;
         ++hits;
-        ASSERT_TRUE(sameBits(a->t, b->t) && sameBits(a->u, b->u) && sameBits(a->v, b->v) && a->segment == b->segment &&
-                    sameBits(a->normal.x, b->normal.x) && sameBits(a->normal.y, b->normal.y) &&
-                    sameBits(a->normal.z, b->normal.z))
-            << named.name << ": t " << a->t << " vs " << b->t;
+        ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;
       }
     }
   }
@@ -66,10 +68,7 @@ TEST(IsaTest, SplineShapesGiveTheSameHitsBitForBit) {
       ASSERT_EQ(baseline->occluded(shape.impl(), ray, nullptr), avx2->occluded(shape.impl(), ray, nullptr)) << named.name;
       if (!a) continue;
       ++hits;
-      ASSERT_TRUE(sameBits(a->t, b->t) && sameBits(a->u, b->u) && sameBits(a->v, b->v) && a->segment == b->segment &&
-                  sameBits(a->normal.x, b->normal.x) && sameBits(a->normal.y, b->normal.y) &&
-                  sameBits(a->normal.z, b->normal.z))
-          << named.name << ": t " << a->t << " vs " << b->t;
+      ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;
     }
   }
   EXPECT_GT(hits, 10000u);

@@ -12,15 +12,6 @@
 namespace revolve::io {
 namespace {
 
-std::string kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a plain file";
-}
-
 class Descriptor {
  public:
   explicit Descriptor(int fd) : fd_(fd) {}
@@ -70,13 +61,22 @@ std::string byteCount(std::uint64_t bytes) {
   return text;
 }
 
+std::string fileKindOf(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a plain file";
+}
+
 std::string readTextFile(const std::string& path, std::uint64_t maxBytes, std::string_view kind) {
   // O_NONBLOCK: opening a FIFO without a writer would otherwise wait for one; it is refused below.
   const Descriptor file(open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC));
   if (file.get() < 0) throw InputError(path, 0, std::string("cannot open: ") + std::strerror(errno));
   struct stat status {};
   if (fstat(file.get(), &status) != 0) throw InputError(path, 0, std::string("cannot read: ") + std::strerror(errno));
-  if (!S_ISREG(status.st_mode)) throw InputError(path, 0, "is " + kindOf(status.st_mode) + ", not a regular file");
+  if (!S_ISREG(status.st_mode)) throw InputError(path, 0, "is " + fileKindOf(status.st_mode) + ", not a regular file");
   const auto tooLarge = [&](const std::string& size) {
     return InputError(path, 0, size + " is too large: " + std::string(kind) + " is read up to " + byteCount(maxBytes));
   };

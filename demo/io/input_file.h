@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include <sys/types.h>
+
 namespace revolve::io {
 
 // "file:line: problem", or "file: problem" for a problem with the whole file (line 0).
@@ -31,6 +33,10 @@ inline constexpr std::size_t kMaxCsvLineBytes = 4096;
 // otherwise (missing, unreadable, not a regular file, too large: "its 80 MB is too large: `kind`
 // is read up to 64 MiB", kind such as "a JSON file").
 std::string readTextFile(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+
+// What a path that is not a regular file names, for messages: "a directory", "a FIFO (named
+// pipe)", "a character device", "a block device", "a socket", else "not a plain file".
+std::string fileKindOf(mode_t mode);
 
 // Bytes as a short human figure for messages ("64 MiB", "1.5 GB").
 std::string byteCount(std::uint64_t bytes);

@@ -1,5 +1,7 @@
 #include "io/output_set.h"
 
+#include "io/input_file.h"
+
 #include <atomic>
 #include <cerrno>
 #include <cstdarg>
@@ -82,15 +84,6 @@ Identity identify(const std::string& path) {
 bool sameFile(const Identity& a, const Identity& b) {
   if (a.exists && b.exists) return a.device == b.device && a.inode == b.inode;
   return !a.exists && !b.exists && a.normal == b.normal;
-}
-
-std::string kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a plain file";
 }
 
 std::string named(std::string_view option) { return option.empty() ? std::string("the output") : std::string(option); }
@@ -198,7 +191,7 @@ void OutputSet::add(std::string_view option, const std::string& path) {
   if (path.empty()) throw std::runtime_error(named(option) + ": the file name is empty");
   struct stat status {};
   if (stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode)) {
-    throw std::runtime_error(path + ": " + named(option) + " names " + kindOf(status.st_mode) +
+    throw std::runtime_error(path + ": " + named(option) + " names " + fileKindOf(status.st_mode) +
                              ", not a regular file (an output is written beside it and renamed into place)");
   }
   auto output = std::make_unique<Output>();
