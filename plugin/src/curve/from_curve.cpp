@@ -44,14 +44,49 @@ class CurveWalk {
     return pieceAt(k, u);
   }
 
-  // The largest distance from the line through at(Ta) and at(Tb) of the arc between them, or
-  // infinity when the arc's tangent somewhere fails to point along the chord (then the arc is not
-  // a graph over the chord, and its distance from the chord segment is not its distance from the line).
+  // How far the arc between at(Ta) and at(Tb) strays from the chord between them. Where the arc
+  // is a graph over the chord (its tangent points along the chord throughout), this is exactly the
+  // arc's largest distance from the chord's line. Elsewhere (the arc turns back somewhere, as a
+  // curve folding back on itself does) it is the largest distance of the arc's control points from
+  // the chord segment, a bound by the convex hull property. Either bounds the Hausdorff distance
+  // between arc and chord: a continuous arc from a to b projects onto the whole chord, so every
+  // chord point has an arc point no farther away than the arc's distance from the segment.
+  // Infinity for a chord of no length (the arc returns to its start).
   double chordError(double Ta, double Tb) const {
     const Point2 a = at(Ta), b = at(Tb);
     const double er = b.r - a.r, ez = b.z - a.z, length = std::hypot(er, ez);
     if (!(length > 0.0)) return std::numeric_limits<double>::infinity();
     const double ur = er / length, uz = ez / length;
+    const double graph = graphChordError(Ta, Tb, a, ur, uz);
+    return graph < std::numeric_limits<double>::infinity() ? graph : hullChordError(Ta, Tb, a, b);
+  }
+
+ private:
+  // The largest distance of the arc's restricted control points from the segment a-b.
+  double hullChordError(double Ta, double Tb, Point2 a, Point2 b) const {
+    const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez;
+    const auto [k0, u0] = split(Ta);
+    const auto [k1, u1] = split(Tb);
+    double worst = 0.0;
+    for (std::size_t k = k0; k <= k1 && k < pieces_; ++k) {
+      const double from = k == k0 ? u0 : 0.0, to = k == k1 ? u1 : 1.0;
+      if (!(to > from)) continue;
+      const Point2* c = &bezier_[3 * k];
+      const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r}, z[4] = {c[0].z, c[1].z, c[2].z, c[3].z};
+      double rs[4], zs[4];
+      detail::cubicRestricted(r, from, to, rs);
+      detail::cubicRestricted(z, from, to, zs);
+      for (int i = 0; i < 4; ++i) {
+        const double s = std::clamp(((rs[i] - a.r) * er + (zs[i] - a.z) * ez) / length2, 0.0, 1.0);
+        worst = std::max(worst, std::hypot(rs[i] - (a.r + s * er), zs[i] - (a.z + s * ez)));
+      }
+    }
+    return worst;
+  }
+
+  // The arc's largest distance from the chord's line (direction ur, uz through a), or infinity
+  // when it is not a graph over the chord.
+  double graphChordError(double Ta, double Tb, Point2 a, double ur, double uz) const {
     const auto [k0, u0] = split(Ta);
     const auto [k1, u1] = split(Tb);
     double worst = 0.0;
@@ -88,7 +123,6 @@ class CurveWalk {
     return worst;
   }
 
- private:
   std::pair<std::size_t, double> split(double T) const {
     if (T >= double(pieces_)) return {pieces_ - 1, 1.0};
     const auto k = static_cast<std::size_t>(T);
