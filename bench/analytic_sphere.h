@@ -2,7 +2,7 @@
 // precision, writing t and a unit Ng (u and v left 0: no surface parameters computed).
 #pragma once
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 namespace revolve::bench {
 

@@ -36,10 +36,9 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
   };
   std::vector<PerRay> results(rays.size());
   tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rayHit = app::embreeRayHit(rays[i]);
-    rtcIntersect1(scene, &context, &rayHit);
+    query.intersect(scene, rayHit);
     PerRay& result = results[i];
     result.hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     if (!result.hit) return;

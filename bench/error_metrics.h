@@ -3,7 +3,7 @@
 
 #include "reference_tracer.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 #include <revolve/revolve.h>
 
 #include <cstddef>

@@ -13,7 +13,7 @@
 #include "test_shapes.h"
 #include "traced_scene.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/revolve.h>  // Embree 3 or 4, whichever the revision was built with
 
 #include <algorithm>
 #include <cstdio>

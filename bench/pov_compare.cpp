@@ -129,11 +129,12 @@ io::SceneDescription vaseScene(int points, const std::optional<Spline>& spline =
   if (spline) {
     scene.file = "vase (" + std::to_string(spline->pieceCount()) + " Bezier pieces)";
     // The polyline beside it is for the tools that need one (io::SceneProfile); it is not traced.
-    scene.profiles.push_back({"vase", Profile::fromCurve(*spline, io::SceneProfile::kDrawingFraction * vase.size()),
-                              ShadingNormals::kDefaultCreaseDegrees, {}, {}, spline, 0});
+    scene.profiles.push_back({.name = "vase",
+                              .profile = Profile::fromCurve(*spline, io::SceneProfile::kDrawingFraction * vase.size()),
+                              .spline = spline});
   } else {
     scene.file = "vase (" + std::to_string(points) + " points)";
-    scene.profiles.push_back({"vase", Profile(vase.sample(points)), ShadingNormals::kDefaultCreaseDegrees, {}});
+    scene.profiles.push_back({.name = "vase", .profile = Profile(vase.sample(points))});
   }
   io::SceneMaterial clay;
   clay.name = "clay";

@@ -41,11 +41,10 @@ std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>&
 
 std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ray>& rays) {
   return [scene, &rays, cursor = std::size_t{0}]() mutable {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     for (std::size_t i = 0; i < kBatchRays; ++i) {
       RTCRayHit rayHit = app::embreeRayHit(rays[cursor]);
-      rtcIntersect1(scene, &context, &rayHit);
+      query.intersect(scene, rayHit);
       if (++cursor == rays.size()) cursor = 0;
     }
     return kBatchRays;
@@ -54,12 +53,11 @@ std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ra
 
 std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets) {
   return [scene, packets, cursor = std::size_t{0}]() mutable {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     alignas(32) const int valid[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     for (std::size_t i = 0; i < kBatchRays / 8; ++i) {
       RTCRayHit8 packet = (*packets)[cursor];
-      rtcIntersect8(valid, scene, &context, &packet);
+      query.intersect(valid, scene, packet);
       if (++cursor == packets->size()) cursor = 0;
     }
     return kBatchRays;
@@ -70,10 +68,9 @@ std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray
   return [scene, &rays, cursor = std::size_t{0}]() mutable {
     const std::size_t start = cursor;
     tbb::parallel_for(std::size_t{0}, kThreadedBatchRays, [&](std::size_t i) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRayHit rayHit = app::embreeRayHit(rays[(start + i) % rays.size()]);
-      rtcIntersect1(scene, &context, &rayHit);
+      query.intersect(scene, rayHit);
     });
     cursor = (start + kThreadedBatchRays) % rays.size();
     return kThreadedBatchRays;

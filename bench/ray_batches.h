@@ -3,7 +3,7 @@
 // Every batch walks its ray set cyclically from where the previous batch stopped.
 #pragma once
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 #include <revolve/revolve.h>
 
 #include <cstddef>

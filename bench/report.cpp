@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 #include <chrono>
 #include <cmath>

@@ -16,7 +16,7 @@
 
 #include "smooth_profile.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 #include <cstdint>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "io/text_files.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 #include <ctime>
 #include <fstream>

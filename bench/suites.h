@@ -4,7 +4,7 @@
 
 #include "results.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 #include <vector>
 

@@ -5,9 +5,29 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 namespace revolve::bench {
 namespace {
+
+// Google Benchmark 1.7 (Debian 12) reports a failed run as error_occurred / error_message, 1.8 and
+// later (Debian 13) as skipped / skip_message.
+template <class Run>
+bool failed(const Run& run) {
+  if constexpr (requires { run.error_occurred; }) {
+    return run.error_occurred;
+  } else {
+    return run.skipped != 0;
+  }
+}
+template <class Run>
+std::string message(const Run& run) {
+  if constexpr (requires { run.error_message; }) {
+    return run.error_message;
+  } else {
+    return run.skip_message;
+  }
+}
 
 // Collects each repetition's throughput, by job index (the benchmark's name).
 class Collector : public benchmark::BenchmarkReporter {
@@ -16,7 +36,7 @@ class Collector : public benchmark::BenchmarkReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const Run& run : runs) {
       if (run.run_type != Run::RT_Iteration) continue;
-      if (run.error_occurred) throw std::runtime_error("benchmark " + run.benchmark_name() + ": " + run.error_message);
+      if (failed(run)) throw std::runtime_error("benchmark " + run.benchmark_name() + ": " + message(run));
       const std::size_t job = std::stoul(run.run_name.function_name);
       samples[job].push_back(double(run.counters.at("items_per_second")) / 1e6);
     }

@@ -34,13 +34,18 @@ echo "== building $revision (the kernel and the benchmark's library)"
 git worktree add -q --detach "$work/old" "$revision"
 cmake -S "$work/old" -B "$work/old-build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DREVOLVE_BUILD_TESTS=OFF >/dev/null
 cmake --build "$work/old-build" --target revolve revolve_io revolve_bench_lib >/dev/null
+# Revisions since the Embree 4 port split the library in two and generate revolve/config.h.
+old_libraries=("$work/old-build/plugin/librevolve.a")
+[[ -f "$work/old-build/plugin/librevolve_core.a" ]] && old_libraries+=("$work/old-build/plugin/librevolve_core.a")
+embree_major=$(grep -o 'REVOLVE_EMBREE_MAJOR [0-9]' "$work/old-build/plugin/include/revolve/config.h" 2>/dev/null | cut -d' ' -f2)
 # This checkout's timing program against the old libraries and headers (copied beside them, since a
 # quoted include looks in the source's own folder first): it uses only what every revision's
 # benchmark library has.
 cp bench/kernel_timing.cpp "$work/old/bench/kernel_timing.cpp"
-g++ -O2 -std=c++20 -I "$work/old/bench" -I "$work/old/demo" -I "$work/old/plugin/include" "$work/old/bench/kernel_timing.cpp" \
+g++ -O2 -std=c++20 -I "$work/old/bench" -I "$work/old/demo" -I "$work/old/plugin/include" \
+  -I "$work/old-build/plugin/include" "$work/old/bench/kernel_timing.cpp" \
   -o "$work/old-timing" "$work/old-build/bench/librevolve_bench_lib.a" "$work/old-build/demo/librevolve_io.a" \
-  "$work/old-build/plugin/librevolve.a" -lembree3 -ltbb -lbenchmark -lpthread
+  "${old_libraries[@]}" "-lembree${embree_major:-3}" -ltbb -lbenchmark -lpthread
 echo "== building this checkout"
 scripts/build.sh --target revolve-kernel-timing >/dev/null
 

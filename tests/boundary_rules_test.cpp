@@ -274,7 +274,9 @@ void expectHit(const Case& c, const std::string& path, bool found, float t, std:
   if (!found) return;
   EXPECT_EQ(t, c.hit->t);
   EXPECT_EQ(segment, c.hit->segment);
-  if (c.rule != Rule::apexTouch) EXPECT_EQ(u, c.hit->u);
+  if (c.rule != Rule::apexTouch) {
+    EXPECT_EQ(u, c.hit->u);
+  }
 }
 
 void expectOccluded(const Case& c, const std::string& path, bool occluded) {
@@ -309,20 +311,19 @@ struct EmbreeScene {
 };
 
 void checkSingleRays(const EmbreeScene& e, const Case& c) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rh{};
   rh.ray = {c.ray.origin.x, c.ray.origin.y, c.ray.origin.z, c.ray.tnear, c.ray.direction.x, c.ray.direction.y,
             c.ray.direction.z, 0.0f, c.ray.tfar, ~0u, 0u, 0u};
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   RTCRay shadow = rh.ray;
-  rtcIntersect1(e.scene.get(), &context, &rh);
+  query.intersect(e.scene.get(), rh);
   const bool found = rh.hit.geomID == e.geomID;
   if (!found) {
     EXPECT_EQ(rh.ray.tfar, c.ray.tfar) << "rtcIntersect1 changed tfar on a miss: " << c.what;
   }
   expectHit(c, "rtcIntersect1", found, rh.ray.tfar, rh.hit.primID, rh.hit.u);
-  rtcOccluded1(e.scene.get(), &context, &shadow);
+  query.occluded(e.scene.get(), shadow);
   expectOccluded(c, "rtcOccluded1", shadow.tfar == -kInf);
 }
 
@@ -344,17 +345,16 @@ void checkPackets(const EmbreeScene& e, const std::vector<Case>& cases) {
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
     alignas(64) RayN shadow = packet.ray;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     if constexpr (N == 4) {
-      rtcIntersect4(valid, e.scene.get(), &context, &packet);
-      rtcOccluded4(valid, e.scene.get(), &context, &shadow);
+      query.intersect(valid, e.scene.get(), packet);
+      query.occluded(valid, e.scene.get(), shadow);
     } else if constexpr (N == 8) {
-      rtcIntersect8(valid, e.scene.get(), &context, &packet);
-      rtcOccluded8(valid, e.scene.get(), &context, &shadow);
+      query.intersect(valid, e.scene.get(), packet);
+      query.occluded(valid, e.scene.get(), shadow);
     } else {
-      rtcIntersect16(valid, e.scene.get(), &context, &packet);
-      rtcOccluded16(valid, e.scene.get(), &context, &shadow);
+      query.intersect(valid, e.scene.get(), packet);
+      query.occluded(valid, e.scene.get(), shadow);
     }
     for (int i = 0; i < N; ++i) {
       const Case& c = cases[(offset + i) % count];

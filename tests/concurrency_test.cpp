@@ -21,13 +21,12 @@ struct HitRecord {
 };
 
 HitRecord traceEmbree(RTCScene scene, const Ray& ray) {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rh{};
   rh.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
             0.0f, ray.tfar, ~0u, 0u, 0u};
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene, &context, &rh);
+  query.intersect(scene, rh);
   return {rh.ray.tfar, rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z, rh.hit.u, rh.hit.v, rh.hit.primID, rh.hit.geomID};
 }
 

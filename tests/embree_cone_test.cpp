@@ -159,12 +159,11 @@ TEST(ConeCurveTest, AgreesWithMibitWhereTheVerdictIsCertain) {
 
       SCOPED_TRACE(::testing::Message() << "ray " << i);
       EXPECT_EQ(intersect(shape, ray).has_value(), hit);
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRayHit rayHit{};
       rayHit.ray = {origin.x, origin.y, origin.z, 0.0f, ray.direction.x, ray.direction.y, ray.direction.z, 0.0f, INFINITY, ~0u, 0u, 0u};
       rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(scene.get(), &context, &rayHit);
+      query.intersect(scene.get(), rayHit);
       ASSERT_EQ(rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID, hit);
       if (!hit) continue;
       const long double t = rayHit.ray.tfar;
@@ -203,12 +202,11 @@ TEST(ConeCurveTest, EmbreeConeKernelAssumesUnitDirections) {
   rtcAttachGeometry(scene.get(), cone.handle());
   rtcCommitScene(scene.get());
   const auto trace = [&](float speed) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rayHit{};
     rayHit.ray = {-3.0f, 0.1f, 0.5f, 0.0f, speed, 0.0f, 0.0f, 0.0f, INFINITY, ~0u, 0u, 0u};
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene.get(), &context, &rayHit);
+    query.intersect(scene.get(), rayHit);
     // The hit's distance from the axis, or -1 for a miss.
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return -1.0;
     return std::hypot(-3.0 + double(rayHit.ray.tfar) * speed, 0.1);

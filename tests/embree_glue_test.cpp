@@ -91,10 +91,9 @@ TEST_P(EmbreeGlueTest, Intersect1MatchesThePureQuery) {
     const std::vector<Ray> awkward = testing::axisAlignedRays(s.shape, random, 500);
     rays.insert(rays.end(), awkward.begin(), awkward.end());
     for (const Ray& ray : rays) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRayHit rh = toRayHit(ray);
-      rtcIntersect1(s.scene.get(), &context, &rh);
+      query.intersect(s.scene.get(), rh);
       expectSameHit(intersect(s.shape, ray), rh.ray.tfar, rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z, rh.hit.u, rh.hit.v,
                     rh.hit.primID, rh.hit.geomID, s.geomID, ray);
       EXPECT_EQ(rh.hit.instID[0], RTC_INVALID_GEOMETRY_ID);
@@ -119,11 +118,10 @@ void checkPackets(Method method) {
       packet.ray.time[i] = 0.0f, packet.ray.flags[i] = 0u;
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    if constexpr (N == 4) rtcIntersect4(valid, s.scene.get(), &context, &packet);
-    if constexpr (N == 8) rtcIntersect8(valid, s.scene.get(), &context, &packet);
-    if constexpr (N == 16) rtcIntersect16(valid, s.scene.get(), &context, &packet);
+    embree::RayQuery query;
+    if constexpr (N == 4) query.intersect(valid, s.scene.get(), packet);
+    if constexpr (N == 8) query.intersect(valid, s.scene.get(), packet);
+    if constexpr (N == 16) query.intersect(valid, s.scene.get(), packet);
     for (int i = 0; i < N; ++i) {
       const Ray& ray = rays[first + i];
       if (valid[i] == 0) {
@@ -138,9 +136,9 @@ void checkPackets(Method method) {
     // Occlusion packets: tfar becomes -inf exactly for the occluded active lanes.
     alignas(64) decltype(packet.ray) shadow = packet.ray;
     for (int i = 0; i < N; ++i) shadow.tfar[i] = rays[first + i].tfar;
-    if constexpr (N == 4) rtcOccluded4(valid, s.scene.get(), &context, &shadow);
-    if constexpr (N == 8) rtcOccluded8(valid, s.scene.get(), &context, &shadow);
-    if constexpr (N == 16) rtcOccluded16(valid, s.scene.get(), &context, &shadow);
+    if constexpr (N == 4) query.occluded(valid, s.scene.get(), shadow);
+    if constexpr (N == 8) query.occluded(valid, s.scene.get(), shadow);
+    if constexpr (N == 16) query.occluded(valid, s.scene.get(), shadow);
     for (int i = 0; i < N; ++i) {
       const bool expected = valid[i] != 0 && occluded(s.shape, rays[first + i]);
       EXPECT_EQ(shadow.tfar[i] == -std::numeric_limits<float>::infinity(), expected);
@@ -160,10 +158,9 @@ TEST_P(EmbreeGlueTest, Occluded1MatchesThePureQuery) {
     SCOPED_TRACE(named.name);
     SingleShapeScene s(Shape(Profile(named.points), {GetParam()}));
     for (const Ray& ray : testing::incoherentRays(s.shape, random, 1000)) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRay shadow = toRayHit(ray).ray;
-      rtcOccluded1(s.scene.get(), &context, &shadow);
+      query.occluded(s.scene.get(), shadow);
       EXPECT_EQ(shadow.tfar == -std::numeric_limits<float>::infinity(), occluded(s.shape, ray));
     }
   }
@@ -217,10 +214,9 @@ void checkInstances(const std::vector<Placement>& placements, bool exact) {
   for (std::size_t k = 0; k < placements.size(); ++k) {
     for (const Ray& objectRay : testing::incoherentRays(shape, random, 2000, 2.0)) {
       const Ray worldRay{placeVector(placements[k], objectRay.origin, true), placeVector(placements[k], objectRay.direction, false)};
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRayHit rh = toRayHit(worldRay);
-      rtcIntersect1(world.get(), &context, &rh);
+      query.intersect(world.get(), rh);
       const std::optional<Hit> expected = intersect(shape, objectRay);
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.instID[0] != ids[k]) {
         // Missed everything, or another instance lies nearer: then this one's hit cannot be nearer.
@@ -288,24 +284,24 @@ std::optional<long double> firstAcceptedReferenceHit(const std::vector<Point2>& 
 TEST(EmbreeFilterTest, IntersectionFilterRejectionFindsTheNextHit) {
   std::mt19937_64 random(505);
   const std::vector<Point2> points = testing::hollowVase();
-  for (bool viaContext : {false, true}) {
-    SCOPED_TRACE(viaContext ? "context filter" : "geometry filter");
+  for (bool viaQuery : {false, true}) {
+    SCOPED_TRACE(viaQuery ? "query filter" : "geometry filter");
     SingleShapeScene s{Shape(Profile(points))};
-    if (!viaContext) {
+    if (viaQuery) {
+      rtcSetSceneFlags(s.scene.get(), embree::kQueryFilterSceneFlag);
+    } else {
       s.geometry.setIntersectFilter(rejectLowerHalf);
       rtcCommitGeometry(s.geometry.handle());
-      rtcCommitScene(s.scene.get());
     }
+    rtcCommitScene(s.scene.get());
     std::size_t checked = 0, secondHits = 0;
     for (const Ray& ray : testing::incoherentRays(s.shape, random, 3000)) {
       bool ambiguous;
       const std::optional<long double> expected = firstAcceptedReferenceHit(points, ray, ambiguous);
       if (ambiguous) continue;
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      if (viaContext) context.filter = rejectLowerHalf;
+      embree::RayQuery query({.filter = viaQuery ? rejectLowerHalf : nullptr});
       RTCRayHit rh = toRayHit(ray);
-      rtcIntersect1(s.scene.get(), &context, &rh);
+      query.intersect(s.scene.get(), rh);
       ++checked;
       ASSERT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, expected.has_value());
       if (!expected) continue;
@@ -345,12 +341,13 @@ TEST(EmbreeFilterTest, SplineShapesOfferEachCrossingToTheFilters) {
     }
     if (ambiguous) continue;
     ++checked;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rh = toRayHit(ray);
-    rtcIntersect1(s.scene.get(), &context, &rh);
+    query.intersect(s.scene.get(), rh);
     ASSERT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, expected.has_value());
-    if (expected) EXPECT_NEAR(rh.ray.tfar, double(*expected), 1e-5 * (1.0 + double(*expected)));
+    if (expected) {
+      EXPECT_NEAR(rh.ray.tfar, double(*expected), 1e-5 * (1.0 + double(*expected)));
+    }
     // The same ray in lane 2 of a packet of four, the other lanes off.
     alignas(16) int valid[4] = {0, 0, -1, 0};
     alignas(16) RTCRayHit4 packet{};
@@ -358,11 +355,11 @@ TEST(EmbreeFilterTest, SplineShapesOfferEachCrossingToTheFilters) {
     packet.ray.dir_x[2] = ray.direction.x, packet.ray.dir_y[2] = ray.direction.y, packet.ray.dir_z[2] = ray.direction.z;
     packet.ray.tnear[2] = ray.tnear, packet.ray.tfar[2] = ray.tfar, packet.ray.mask[2] = ~0u;
     packet.hit.geomID[2] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect4(valid, s.scene.get(), &context, &packet);
+    query.intersect(valid, s.scene.get(), packet);
     EXPECT_EQ(packet.hit.geomID[2], rh.hit.geomID);
     EXPECT_EQ(packet.ray.tfar[2], rh.ray.tfar);
     RTCRay shadow = toRayHit(ray).ray;
-    rtcOccluded1(s.scene.get(), &context, &shadow);
+    query.occluded(s.scene.get(), shadow);
     EXPECT_EQ(shadow.tfar == -INFINITY, expected.has_value());
   }
   EXPECT_GT(checked, 1500u);
@@ -380,10 +377,9 @@ TEST(EmbreeFilterTest, OcclusionFilterIsHonoured) {
     bool ambiguous;
     const bool expected = firstAcceptedReferenceHit(points, ray, ambiguous).has_value();
     if (ambiguous) continue;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRay shadow = toRayHit(ray).ray;
-    rtcOccluded1(s.scene.get(), &context, &shadow);
+    query.occluded(s.scene.get(), shadow);
     EXPECT_EQ(shadow.tfar == -std::numeric_limits<float>::infinity(), expected);
     flipped += occluded(s.shape, ray) && !expected;
   }
@@ -409,9 +405,8 @@ TEST(EmbreeFilterTest, FiltersWorkInPackets) {
       packet.ray.tnear[i] = 0.0f, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    rtcIntersect8(valid, s.scene.get(), &context, &packet);
+    embree::RayQuery query;
+    query.intersect(valid, s.scene.get(), packet);
     for (int i = 0; i < 8; ++i) {
       bool ambiguous;
       const std::optional<long double> expected = firstAcceptedReferenceHit(points, rays[first + i], ambiguous);
@@ -430,10 +425,9 @@ TEST(EmbreeStatsTest, CountingGeometryAccumulatesWork) {
   const std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 1000);
   Stats pure;
   for (const Ray& ray : rays) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rh = toRayHit(ray);
-    rtcIntersect1(s.scene.get(), &context, &rh);
+    query.intersect(s.scene.get(), rh);
     intersect(s.shape, ray, &pure);
   }
   const Stats embree = s.geometry.stats();
@@ -512,10 +506,9 @@ TEST(TessellationTest, MeshNormalsAndHitsAgreeWithTheExactSurface) {
   std::size_t compared = 0;
   for (const Ray& ray : testing::incoherentRays(shape, random, 4000)) {
     const std::optional<Hit> exact = intersect(shape, ray);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rh = toRayHit(ray);
-    rtcIntersect1(scene.get(), &context, &rh);
+    query.intersect(scene.get(), rh);
     if (!exact || rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
     const double length = std::hypot(ray.direction.x, ray.direction.y, ray.direction.z);
     const double cosine = -(exact->normal.x * ray.direction.x + exact->normal.y * ray.direction.y +
@@ -560,10 +553,9 @@ TEST(EmbreeBoundsTest, HitsWhereTheSurfaceTouchesItsBoxAreNotCulled) {
     const long double x = ray.origin.x + truth->t * ray.direction.x, y = ray.origin.y + truth->t * ray.direction.y;
     if (std::hypot(x, y) > 0.5L * (1 - 1e-9L)) continue;
     ++tested;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rh = toRayHit(ray);
-    rtcIntersect1(s.scene.get(), &context, &rh);
+    query.intersect(s.scene.get(), rh);
     missed += rh.hit.geomID == RTC_INVALID_GEOMETRY_ID;
   }
   EXPECT_GT(tested, 5000u);
@@ -588,10 +580,9 @@ TEST(EmbreeFilterTest, EachCrossingIsOfferedOnce) {
   rtcCommitGeometry(s.geometry.handle());
   rtcCommitScene(s.scene.get());
   gFilterCalls = 0;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rh = toRayHit({{0, 0, 2}, {0, 0, -1}});
-  rtcIntersect1(s.scene.get(), &context, &rh);
+  query.intersect(s.scene.get(), rh);
   EXPECT_EQ(rh.hit.geomID, RTC_INVALID_GEOMETRY_ID);
   EXPECT_EQ(gFilterCalls.load(), 2);
 }
@@ -610,11 +601,10 @@ TEST(EmbreeFilterTest, FilteredTiesGoToTheLowerSegmentAsUnfilteredOnes) {
     const Vec3 d{sixteenths(random) / 16.0f, sixteenths(random) / 16.0f, sixteenths(random) / 16.0f};
     if (d.x == 0 && d.y == 0 && d.z == 0) continue;
     const Ray ray{{-2 * d.x, -2 * d.y, -2 * d.z}, d};  // through the pinch (0, 0, 0) at t = 2
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit a = toRayHit(ray), b = toRayHit(ray);
-    rtcIntersect1(plain.scene.get(), &context, &a);
-    rtcIntersect1(filtered.scene.get(), &context, &b);
+    query.intersect(plain.scene.get(), a);
+    query.intersect(filtered.scene.get(), b);
     ASSERT_EQ(a.hit.geomID != RTC_INVALID_GEOMETRY_ID, b.hit.geomID != RTC_INVALID_GEOMETRY_ID);
     EXPECT_EQ(a.ray.tfar, b.ray.tfar);
     EXPECT_EQ(a.hit.primID, b.hit.primID);
@@ -632,10 +622,9 @@ TEST(EmbreeGeometryTest, AMovedShapeStillServesItsGeometry) {
   ScenePtr scene(rtcNewScene(device.get()));
   rtcAttachGeometry(scene.get(), geometry.handle());
   rtcCommitScene(scene.get());
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rh = toRayHit({{-5, 0, 0}, {1, 0, 0}});
-  rtcIntersect1(scene.get(), &context, &rh);
+  query.intersect(scene.get(), rh);
   ASSERT_NE(rh.hit.geomID, RTC_INVALID_GEOMETRY_ID);
   EXPECT_EQ(rh.ray.tfar, 4.5f);  // the side at x = -0.5
 }
@@ -664,10 +653,9 @@ TEST(EmbreeBoundsTest, CamerasFarAwayStillHitWhereTheSurfaceTouchesItsBox) {
       ray.direction = {float(tx - ray.origin.x), float(ty - ray.origin.y), float(tz - ray.origin.z)};
       if (!intersect(shape, ray)) continue;  // the exact answer decides which rays must hit
       ++hits;
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
+      embree::RayQuery query;
       RTCRayHit rh = toRayHit(ray);
-      rtcIntersect1(scene.get(), &context, &rh);
+      query.intersect(scene.get(), rh);
       lost += rh.hit.geomID == RTC_INVALID_GEOMETRY_ID;
     }
   }

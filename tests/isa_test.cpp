@@ -35,10 +35,10 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
       rays.insert(rays.end(), awkward.begin(), awkward.end());
       for (const Ray& ray : rays) {
         Stats statsA, statsB;
-        const std::optional<Hit> a = baseline->intersect(shape.impl(), ray, &statsA);
-        const std::optional<Hit> b = avx2->intersect(shape.impl(), ray, &statsB);
+        const std::optional<Hit> a = baseline->intersect(detail::implOf(shape), ray, &statsA);
+        const std::optional<Hit> b = avx2->intersect(detail::implOf(shape), ray, &statsB);
         ASSERT_EQ(a.has_value(), b.has_value()) << named.name;
-        ASSERT_EQ(baseline->occluded(shape.impl(), ray, nullptr), avx2->occluded(shape.impl(), ray, nullptr)) << named.name;
+        ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr), avx2->occluded(detail::implOf(shape), ray, nullptr)) << named.name;
         EXPECT_EQ(statsA.quadratics, statsB.quadratics) << named.name;
         if (!a) continue;
         ++hits;
@@ -62,10 +62,10 @@ TEST(IsaTest, SplineShapesGiveTheSameHitsBitForBit) {
     const std::vector<Ray> awkward = testing::axisAlignedRays(shape, random, 500);
     rays.insert(rays.end(), awkward.begin(), awkward.end());
     for (const Ray& ray : rays) {
-      const std::optional<Hit> a = baseline->intersect(shape.impl(), ray, nullptr);
-      const std::optional<Hit> b = avx2->intersect(shape.impl(), ray, nullptr);
+      const std::optional<Hit> a = baseline->intersect(detail::implOf(shape), ray, nullptr);
+      const std::optional<Hit> b = avx2->intersect(detail::implOf(shape), ray, nullptr);
       ASSERT_EQ(a.has_value(), b.has_value()) << named.name;
-      ASSERT_EQ(baseline->occluded(shape.impl(), ray, nullptr), avx2->occluded(shape.impl(), ray, nullptr)) << named.name;
+      ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr), avx2->occluded(detail::implOf(shape), ray, nullptr)) << named.name;
       if (!a) continue;
       ++hits;
       ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;

@@ -41,10 +41,10 @@ TEST(KernelPacketTest, PacketSetUpEqualsTheSingleRaySetUpBitForBit) {
     }
     detail::MeridianRay packet[detail::kLanes];
     const unsigned ok = detail::setUpMeridianRays(
-        shape.impl().frame, {fields[0], fields[1], fields[2], fields[3], fields[4], fields[5], fields[6], fields[7]}, packet);
+        detail::implOf(shape).frame, {fields[0], fields[1], fields[2], fields[3], fields[4], fields[5], fields[6], fields[7]}, packet);
     for (int lane = 0; lane < detail::kLanes; ++lane) {
       detail::MeridianRay single;
-      const bool singleOk = detail::setUpMeridianRay(shape.impl().frame, rays[first + lane], single);
+      const bool singleOk = detail::setUpMeridianRay(detail::implOf(shape).frame, rays[first + lane], single);
       ASSERT_EQ(singleOk, bool((ok >> lane) & 1)) << "ray " << first + lane;
       if (!singleOk) continue;
       ++accepted;
@@ -70,7 +70,7 @@ TEST(KernelPacketTest, PacketAttributesEqualTheSingleHitsBitForBit) {
   profiles.push_back({{0.0, -1.0}, {2e-160, -0.5}, {2e-160, 0.5}, {0.0, 1.0}});
   for (const std::vector<Point2>& points : profiles) {
     const Shape shape{Profile(points)};
-    const Shape::Impl& impl = shape.impl();
+    const detail::ShapeImpl& impl = detail::implOf(shape);
     std::vector<Ray> rays = testing::incoherentRays(shape, random, 6000);
     const std::vector<Ray> awkward = testing::axisAlignedRays(shape, random, 2000);
     rays.insert(rays.end(), awkward.begin(), awkward.end());

@@ -127,13 +127,6 @@ TEST(SplineTest, NearlyTouchingPartsAndSharpCornersAreValid) {
   }
 }
 
-// Bezier evaluation written here: the test's own.
-Point2 bezierAt(const Point2* c, double u) {
-  const double v = 1 - u;
-  const double b[4] = {v * v * v, 3 * v * v * u, 3 * v * u * u, u * u * u};
-  return {b[0] * c[0].r + b[1] * c[1].r + b[2] * c[2].r + b[3] * c[3].r, b[0] * c[0].z + b[1] * c[1].z + b[2] * c[2].z + b[3] * c[3].z};
-}
-
 TEST(SplineTest, QuadraticPiecesAreRaisedToCubicsOfTheSameCurve) {
   const std::vector<Point2> points{{0, 0}, {1, 0.5}, {0.5, 1}, {0.2, 1.5}, {0.7, 2}};
   const Spline spline(SplineKind::quadratic, points);

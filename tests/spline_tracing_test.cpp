@@ -656,8 +656,7 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
     rtcAttachGeometry(scene, geometry.handle());
     rtcCommitScene(scene);
     const std::vector<Ray> rays = testing::incoherentRays(shape, random, 256);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     for (std::size_t first = 0; first < rays.size(); first += 8) {
       RTCRayHit8 packet{};
       alignas(32) int valid[8];
@@ -669,7 +668,7 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
         packet.ray.tnear[i] = ray.tnear, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
         packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
       }
-      rtcIntersect8(valid, scene, &context, &packet);
+      query.intersect(valid, scene, packet);
       for (int i = 0; i < 8; ++i) {
         const Ray& ray = rays[first + i];
         const std::optional<Hit> expected = intersect(shape, ray);
@@ -677,10 +676,10 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
         one.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
                    0.0f, ray.tfar, ~0u, 0u, 0u};
         one.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene, &context, &one);
+        query.intersect(scene, one);
         RTCRay shadow = one.ray;
         shadow.tfar = ray.tfar;
-        rtcOccluded1(scene, &context, &shadow);
+        query.occluded(scene, shadow);
         ASSERT_EQ(expected.has_value(), packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID);
         ASSERT_EQ(expected.has_value(), one.hit.geomID != RTC_INVALID_GEOMETRY_ID);
         EXPECT_EQ(expected.has_value(), shadow.tfar == -INFINITY);

@@ -1,7 +1,7 @@
 // Owning handles for Embree objects in the applications, and a device that reports its errors.
 #pragma once
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 #include <cstdio>
 #include <memory>

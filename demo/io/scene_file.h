@@ -49,9 +49,9 @@ struct SceneProfile {
   // polyline (meshes, plots).
   Profile profile;
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
-  std::vector<std::string> warnings;  // "where: message" for each point the Profile dropped
-  std::string csvFile;  // the CSV it was read from, as opened; empty for inline points
-  std::optional<Spline> spline;  // a curved "spline" without a "tolerance": traced exactly
+  std::vector<std::string> warnings{};  // "where: message" for each point the Profile dropped
+  std::string csvFile{};  // the CSV it was read from, as opened; empty for inline points
+  std::optional<Spline> spline{};  // a curved "spline" without a "tolerance": traced exactly
   double tolerance = 0;          // the "tolerance" given, or 0
 };
 

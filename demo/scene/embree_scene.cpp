@@ -313,11 +313,10 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
     refused_->fetch_add(1, std::memory_order_relaxed);
     return std::nullopt;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rayHit = app::embreeRayHit(ray);
   const float length = unitDirections_ ? normaliseDirection(rayHit.ray) : 1.0f;
-  rtcIntersect1(top_.get(), &context, &rayHit);
+  query.intersect(top_.get(), rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
   return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
@@ -328,11 +327,10 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
     refused_->fetch_add(1, std::memory_order_relaxed);
     return std::nullopt;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRayHit rayHit = app::embreeRayHit(ray);
   const float length = unitDirections_ ? normaliseDirection(rayHit.ray) : 1.0f;
-  rtcIntersect1(top_.get(), &context, &rayHit);
+  query.intersect(top_.get(), rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
   const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
@@ -344,11 +342,10 @@ bool EmbreeScene::occluded(const Ray& ray) const noexcept {
     refused_->fetch_add(1, std::memory_order_relaxed);
     return false;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  embree::RayQuery query;
   RTCRay shadow = app::embreeRayHit(ray).ray;
   if (unitDirections_) normaliseDirection(shadow);
-  rtcOccluded1(top_.get(), &context, &shadow);
+  query.occluded(top_.get(), shadow);
   return shadow.tfar == -std::numeric_limits<float>::infinity();
 }
 

@@ -115,10 +115,9 @@ std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>&
   tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
     const Ray& ray = rays[i];
     if (!app::embreeAccepts(ray)) return;  // unreachable: the reader keeps rays within +-2^60
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    embree::RayQuery query;
     RTCRayHit rayHit = app::embreeRayHit(ray);
-    rtcIntersect1(scene, &context, &rayHit);
+    query.intersect(scene, rayHit);
     if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
       hits[i] = mesh ? meshHit(profile, slices, ray, rayHit) : exactHit(rayHit);
     }

@@ -68,9 +68,13 @@ int main() {
     const revolve::Vec3 direction{0, 1, 0};
     for (const float x : {-1.5f, -1.0f, 0.0f, 1.5f}) {
       RTCRayHit rh = rayHit({x, -5, 0.6f}, direction);
+#if RTC_VERSION_MAJOR >= 4
+      rtcIntersect1(world, &rh);
+#else  // Embree 3 takes an intersect context
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
       rtcIntersect1(world, &context, &rh);
+#endif
       if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
         std::printf("x = %5.2f: no hit\n", x);
         continue;

@@ -75,10 +75,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FUZZ_CHECK(0.0f <= ray.tnear && ray.tnear <= ray.tfar);
     for (std::size_t i = 0; i < 6; ++i) FUZZ_CHECK(std::abs(double(fields[i])) <= Profile::kMaxCoordinate);
     FUZZ_CHECK(app::embreeAccepts(ray));
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    revolve::embree::RayQuery query;
     RTCRayHit rayHit = app::embreeRayHit(ray);
-    rtcIntersect1(tracedScene(), &context, &rayHit);
+    query.intersect(tracedScene(), rayHit);
     if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) FUZZ_CHECK(rayHit.ray.tfar >= ray.tnear && rayHit.ray.tfar <= ray.tfar);
   }
   const std::vector<Ray> again = io::parseRaysCsv(toCsv(rays), "again.csv");

@@ -1,14 +1,22 @@
 #!/usr/bin/env bash
 # Installs the built library into a fresh prefix, then configures, builds and runs separate
-# projects that find it with find_package(revolve), as a user's project does: the minimal consumer
-# here and the README's example program (examples/library), so that neither can rot.
-# Usage: install_and_consume.sh <build-dir> <scratch-dir> <project-dir>...
+# projects that find it with find_package(revolve), as a user's project does: a program that links
+# revolve::core without Embree, an application written in the native API of the Embree the library
+# was built with (consumer_embree3 or consumer_embree4), and the README's example program
+# (examples/library), so that none of them can rot.
+# Usage: install_and_consume.sh <build-dir> <scratch-dir> <package-tests-dir> <project-dir>...
 set -euo pipefail
-build=$1 scratch=$2
-shift 2
+build=$1 scratch=$2 here=$3
+shift 3
 rm -rf "$scratch"
 cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
-for project in "$@"; do
+major=$(sed -n 's/^#define REVOLVE_EMBREE_MAJOR \([0-9]*\)$/\1/p' "$scratch/prefix/include/revolve/config.h")
+if [[ "$major" != 3 && "$major" != 4 ]]; then
+  echo "install_and_consume.sh: the installed revolve/config.h names no Embree major version (got '$major')" >&2
+  exit 1
+fi
+echo "== the installed revolve was built against Embree $major"
+for project in "$here/consumer_core" "$here/consumer_embree$major" "$@"; do
   name=$(basename "$project")
   cmake -S "$project" -B "$scratch/$name" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
   cmake --build "$scratch/$name" >/dev/null

@@ -1,6 +1,6 @@
 // Profile::fromCurve: the fewest polyline points within a tolerance of a spline, chosen greedily,
 // each chord reaching as far along the curve as its exact chord error allows.
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "curve/cubic.h"
 #include "util/format.h"

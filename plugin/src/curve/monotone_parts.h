@@ -3,7 +3,7 @@
 // what lets a part take a segment's place in the search).
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <cstdint>
 #include <span>

@@ -3,7 +3,7 @@
 // cylinderClearance need of a spline shape's part, as segmentMinimum gives it for a segment.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 namespace revolve::detail {
 

@@ -1,6 +1,6 @@
 // Spline validation: every rule checked once, here, with a message naming the point (or piece), its
 // value and the rule, as Profile does for polylines.
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "curve/cubic.h"
 #include "curve/curve_self_intersection.h"

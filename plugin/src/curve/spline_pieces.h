@@ -3,7 +3,7 @@
 // the interpolating kinds no two equal consecutive points.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <span>
 #include <vector>

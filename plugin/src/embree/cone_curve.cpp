@@ -3,7 +3,7 @@
 #include "profile/points.h"
 #include "util/format.h"
 
-#include <embree3/rtcore.h>
+#include <revolve/embree_api.h>
 
 namespace revolve::detail {
 namespace {

@@ -15,7 +15,7 @@
 // directions give hits off the surface.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/embree.h>
 
 #include <cstdint>
 #include <string>

@@ -1,14 +1,15 @@
 // Embree objects: the user geometry, filters, point queries, the tessellated mesh and Embree's own
-// cone curve. Everything
-// that calls Embree lives here and in ray_callbacks.h (the per-ray callbacks, compiled per
-// instruction set), so that a port to Embree 4 is these two files' work.
+// cone curve. The per-ray callbacks are in ray_callbacks.h (compiled per instruction set), and what
+// differs between Embree 3 and 4 in query_filters.h and revolve/embree_api.h.
+#include "embree/callback_kernels.h"
 #include "embree/cone_curve.h"
 #include "embree/payload.h"
-#include "isa/query_kernels.h"
-#include "shape/queries.h"
+#include "embree/query_filters.h"
 #include "embree/tessellation.h"
+#include "shape/queries.h"
 
 #include <cstring>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -21,7 +22,7 @@ std::string deviceError(RTCDevice device) {
 }
 
 void boundsCallback(const RTCBoundsFunctionArguments* args) {
-  const auto& payload = *static_cast<const Geometry::Payload*>(args->geometryUserPtr);
+  const auto& payload = *static_cast<const detail::GeometryPayload*>(args->geometryUserPtr);
   const Bounds b = payload.shape->bounds;
   RTCBounds& out = *args->bounds_o;
   out.lower_x = b.lower.x;
@@ -57,7 +58,8 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
   const unsigned instID = instanced ? context.instID[0] : RTC_INVALID_GEOMETRY_ID;
   const Geometry* geometry = state.lookup(state.user, instID, args->geomID);
   if (geometry == nullptr) return false;
-  const Shape::Impl& shape = *static_cast<const Geometry::Payload*>(rtcGetGeometryUserData(geometry->handle()))->shape;
+  const detail::ShapeImpl& shape =
+      *static_cast<const detail::GeometryPayload*>(rtcGetGeometryUserData(geometry->handle()))->shape;
   const Vec3 world{args->query->x, args->query->y, args->query->z};
 
   Vec3 point;
@@ -86,16 +88,18 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
 }  // namespace
 
 Geometry::Geometry(RTCDevice device, const Shape& shape, Options options)
-    : payload_(std::make_unique<Payload>()) {
-  payload_->shape = &shape.impl();
+    : payload_(std::make_unique<detail::GeometryPayload>()) {
+  payload_->shape = &detail::implOf(shape);
+  // Before the first revolve geometry can be traced: whether argument filters can be reached.
+  detail::checkArgumentsReachable(device);
   geometry_ = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
   if (geometry_ == nullptr) throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_USER) failed: " + deviceError(device));
   rtcSetGeometryUserPrimitiveCount(geometry_, 1);
   rtcSetGeometryUserData(geometry_, payload_.get());
   rtcSetGeometryBoundsFunction(geometry_, boundsCallback, nullptr);
-  const detail::QueryKernels& kernels = detail::queryKernels();
-  rtcSetGeometryIntersectFunction(geometry_, kernels.embreeIntersect[options.countStats]);
-  rtcSetGeometryOccludedFunction(geometry_, kernels.embreeOccluded[options.countStats]);
+  const detail::CallbackKernels& kernels = detail::callbackKernels();
+  rtcSetGeometryIntersectFunction(geometry_, kernels.intersect[options.countStats]);
+  rtcSetGeometryOccludedFunction(geometry_, kernels.occluded[options.countStats]);
   rtcCommitGeometry(geometry_);
 }
 
@@ -103,6 +107,17 @@ Geometry::~Geometry() {
   if (geometry_ != nullptr) rtcReleaseGeometry(geometry_);
 }
 
+Geometry::Geometry(Geometry&& other) noexcept
+    : geometry_(std::exchange(other.geometry_, nullptr)), payload_(std::move(other.payload_)) {}
+
+Geometry& Geometry::operator=(Geometry&& other) noexcept {
+  if (this != &other) {
+    if (geometry_ != nullptr) rtcReleaseGeometry(geometry_);
+    geometry_ = std::exchange(other.geometry_, nullptr);
+    payload_ = std::move(other.payload_);
+  }
+  return *this;
+}
 
 void Geometry::setIntersectFilter(RTCFilterFunctionN filter) noexcept {
   rtcSetGeometryIntersectFilterFunction(geometry_, filter);
@@ -113,6 +128,13 @@ void Geometry::setOcclusionFilter(RTCFilterFunctionN filter) noexcept {
   rtcSetGeometryOccludedFilterFunction(geometry_, filter);
   payload_->occlusionFilter = filter != nullptr;
 }
+
+void Geometry::enableFilterFunctionFromArguments(bool enable) noexcept {
+  detail::enableArgumentFilter(geometry_, enable);
+  payload_->argumentFilter = enable;
+}
+
+bool Geometry::argumentFiltersSupported(RTCDevice device) { return detail::checkArgumentsReachable(device); }
 
 Stats Geometry::stats() const noexcept {
   Stats stats;

@@ -1,19 +1,21 @@
-// What a revolve::Geometry hands Embree as its user data.
+// What a revolve::Geometry hands Embree as its user data: the shape, which filters may apply, and
+// the work counters.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/embree.h>
 
 #include "shape/shape_impl.h"
 
 #include <atomic>
 #include <cstdint>
 
-namespace revolve {
+namespace revolve::detail {
 
-struct Geometry::Payload {
-  const Shape::Impl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
-  bool intersectFilter = false;
-  bool occlusionFilter = false;
+struct GeometryPayload {
+  const ShapeImpl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
+  bool intersectFilter = false;   // the geometry has its own intersection filter
+  bool occlusionFilter = false;   // ... its own occlusion filter
+  bool argumentFilter = false;    // enableFilterFunctionFromArguments (Embree 4)
   std::atomic<std::uint64_t> rays{0}, nodesVisited{0}, shellTests{0}, quadratics{0};
 
   void add(const Stats& stats) noexcept {
@@ -24,4 +26,4 @@ struct Geometry::Payload {
   }
 };
 
-}  // namespace revolve
+}  // namespace revolve::detail

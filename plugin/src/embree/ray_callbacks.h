@@ -1,20 +1,19 @@
 // Embree's intersect and occluded callbacks for a revolve::Geometry: packets of 1, 4, 8 and 16
 // rays with valid masks, filter functions, instance IDs. Compiled per instruction set (util/isa.h).
 //
-// User-geometry contract (Embree 3.13): callbacks receive N = 1, 4, 8 or 16 rays in SoA layout with a
-// valid mask, rays already in object space for instanced geometry; on a hit they write tfar, Ng,
-// u, v, primID, geomID and instID[0], and nothing on a miss; occluded writes tfar = -inf. Embree
-// never calls filter functions for user geometry itself, so the callbacks call rtcFilter* per
-// candidate, passing the very `args` they received (Embree reads a hidden field behind it).
+// User-geometry contract (the same in Embree 3.13 and 4.x): callbacks receive N = 1, 4, 8 or 16
+// rays in SoA layout with a valid mask, rays already in object space for instanced geometry; on a
+// hit they write tfar, Ng, u, v, primID, geomID and the instance ids, and nothing on a miss;
+// occluded writes tfar = -inf. Embree never calls filter functions for user geometry itself, so
+// the callbacks offer each candidate to them (embree/query_filters.h).
 #pragma once
 
 #include "embree/payload.h"
+#include "embree/query_filters.h"
 #include "kernel/meridian_rays.h"
 #include "shape/shape_search.h"
 #include "shape/surface_hit.h"
 #include "util/isa.h"
-
-#include <embree3/rtcore.h>
 
 #include <limits>
 
@@ -28,7 +27,7 @@ inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
           RTCRayN_tfar(rays, N, i)};
 }
 
-inline RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectContext* context) noexcept {
+inline RTCHit embreeHit(const Hit& hit, unsigned geomID, const embree::QueryContext* context) noexcept {
   RTCHit out{};
   out.Ng_x = hit.normal.x;
   out.Ng_y = hit.normal.y;
@@ -37,7 +36,7 @@ inline RTCHit embreeHit(const Hit& hit, unsigned geomID, const RTCIntersectConte
   out.v = hit.v;
   out.primID = hit.segment;  // the profile segment, as documented in revolve.h
   out.geomID = geomID;
-  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) out.instID[level] = context->instID[level];
+  recordInstance(out, context);
   return out;
 }
 
@@ -63,7 +62,8 @@ inline double leafParameter(const Hits& hits, int j) noexcept {
 template <bool kCount, bool kCurve>
 struct FilteredNearest {
   const RTCIntersectFunctionNArguments* args;
-  const Shape::Impl& shape;
+  const GeometryPayload& payload;
+  const ShapeImpl& shape;
   const MeridianRay& ray;
   const Ray& caller;
   unsigned lane;
@@ -98,8 +98,8 @@ struct FilteredNearest {
     float& tfar = RTCRayN_tfar(rays, N, lane);
     const float previous = tfar;
     tfar = hit.t;  // the filter sees the candidate's distance
-    RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, rays, view.hits(), N};
-    rtcFilterIntersection(args, &filter);
+    const RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, rays, view.hits(), N};
+    offerToIntersectFilters(args, &filter, payload, lane);
     if (view.valid[lane] != -1) {
       tfar = previous;
       return false;
@@ -113,7 +113,8 @@ struct FilteredNearest {
 template <bool kCount, bool kCurve>
 struct FilteredAny {
   const RTCOccludedFunctionNArguments* args;
-  const Shape::Impl& shape;
+  const GeometryPayload& payload;
+  const ShapeImpl& shape;
   const MeridianRay& ray;
   const Ray& caller;
   unsigned lane;
@@ -137,8 +138,8 @@ struct FilteredAny {
     float& tfar = RTCRayN_tfar(args->ray, N, lane);
     const float previous = tfar;
     tfar = hit.t;
-    RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, args->ray, view.hits(), N};
-    rtcFilterOcclusion(args, &filter);
+    const RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, args->ray, view.hits(), N};
+    offerToOcclusionFilters(args, &filter, payload, lane);
     tfar = previous;  // the caller sets -inf on acceptance
     return view.valid[lane] == -1;
   }
@@ -146,14 +147,15 @@ struct FilteredAny {
 
 // The nearest hit of lane i, its MeridianRay set up, written into the packet.
 template <bool kCount, bool kCurve>
-inline void intersectLane(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
+inline void intersectLane(const RTCIntersectFunctionNArguments* args, const GeometryPayload& payload, bool filtered,
                           const MeridianRay& meridian, unsigned i, Stats& stats) noexcept {
+  const ShapeImpl& shape = *payload.shape;
   const unsigned N = args->N;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
   const Ray ray = laneRay(rays, N, i);
   double hi = meridian.hi;
   if (filtered) {
-    FilteredNearest<kCount, kCurve> visitor{args, shape, meridian, ray, i, hi, stats};
+    FilteredNearest<kCount, kCurve> visitor{args, payload, shape, meridian, ray, i, hi, stats};
     searchShape<kCount>(shape, meridian, hi, visitor, stats);
     return;
   }
@@ -186,17 +188,16 @@ inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, flo
   RTCHitN_v(hits, N, i) = v;
   RTCHitN_primID(hits, N, i) = segment;  // the profile segment, as documented in revolve.h
   RTCHitN_geomID(hits, N, i) = args->geomID;
-  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) {
-    RTCHitN_instID(hits, N, i, level) = args->context->instID[level];
-  }
+  recordInstance(hits, N, i, args->context);
 }
 
 // A packet: the lanes set up kLanes at a time, searched one by one, and their hits' attributes
 // computed kLanes at a time (surfaceHitLanes, equal to surfaceHit bit for bit; spline shapes' one
 // at a time).
 template <bool kCount, bool kCurve>
-inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, bool filtered,
+inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const GeometryPayload& payload, bool filtered,
                             Stats& stats) noexcept {
+  const ShapeImpl& shape = *payload.shape;
   const unsigned N = args->N;  // 4, 8 or 16: a multiple of kLanes
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, N);
   MeridianRay meridians[16];
@@ -217,7 +218,7 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
     for (; active != 0; active &= active - 1) {
       const unsigned i = first + unsigned(__builtin_ctz(active));
       if (filtered) {
-        intersectLane<kCount, kCurve>(args, shape, true, meridians[i], i, stats);
+        intersectLane<kCount, kCurve>(args, payload, true, meridians[i], i, stats);
         continue;
       }
       double hi = meridians[i].hi;
@@ -261,7 +262,7 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Sh
 // rtcIntersect1's case, without a filter: N = 1, where Embree's packet is exactly an RTCRayHit, so
 // the fields are read and written directly rather than through the N-wide accessors.
 template <bool kCount, bool kCurve>
-inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape::Impl& shape, Stats& stats) noexcept {
+inline void intersectOne(const RTCIntersectFunctionNArguments* args, const ShapeImpl& shape, Stats& stats) noexcept {
   RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
   const Ray ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
                 {rayHit.ray.dir_x, rayHit.ray.dir_y, rayHit.ray.dir_z},
@@ -282,13 +283,13 @@ inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape
   rayHit.hit.v = hit.v;
   rayHit.hit.primID = hit.segment;  // the profile segment, as documented in revolve.h
   rayHit.hit.geomID = args->geomID;
-  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) rayHit.hit.instID[level] = args->context->instID[level];
+  recordInstance(rayHit.hit, args->context);
 }
 
 template <bool kCount, bool kCurve>
-void intersectWith(const RTCIntersectFunctionNArguments* args, Geometry::Payload& payload) {
-  const Shape::Impl& shape = *payload.shape;
-  const bool filtered = payload.intersectFilter || args->context->filter != nullptr;
+void intersectWith(const RTCIntersectFunctionNArguments* args, GeometryPayload& payload) {
+  const ShapeImpl& shape = *payload.shape;
+  const bool filtered = intersectFiltered(args, payload);
   Stats stats;
   if (args->N == 1) {
     if (args->valid[0] == -1) {
@@ -296,21 +297,21 @@ void intersectWith(const RTCIntersectFunctionNArguments* args, Geometry::Payload
       MeridianRay meridian;
       if (filtered) {
         if (setUpMeridianRay(shape.frame, laneRay(RTCRayHitN_RayN(args->rayhit, 1), 1, 0), meridian)) {
-          intersectLane<kCount, kCurve>(args, shape, true, meridian, 0, stats);
+          intersectLane<kCount, kCurve>(args, payload, true, meridian, 0, stats);
         }
       } else {
         intersectOne<kCount, kCurve>(args, shape, stats);
       }
     }
   } else {
-    intersectPacket<kCount, kCurve>(args, shape, filtered, stats);
+    intersectPacket<kCount, kCurve>(args, payload, filtered, stats);
   }
   if constexpr (kCount) payload.add(stats);
 }
 
 template <bool kCount>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
-  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  auto& payload = *static_cast<GeometryPayload*>(args->geometryUserPtr);
   if (payload.shape->curved()) {
     intersectWith<kCount, true>(args, payload);
   } else {
@@ -319,10 +320,10 @@ void intersectCallback(const RTCIntersectFunctionNArguments* args) {
 }
 
 template <bool kCount, bool kCurve>
-void occludedWith(const RTCOccludedFunctionNArguments* args, Geometry::Payload& payload) {
-  const Shape::Impl& shape = *payload.shape;
+void occludedWith(const RTCOccludedFunctionNArguments* args, GeometryPayload& payload) {
+  const ShapeImpl& shape = *payload.shape;
   const unsigned N = args->N;
-  const bool filtered = payload.occlusionFilter || args->context->filter != nullptr;
+  const bool filtered = occlusionFiltered(args, payload);
   Stats stats;
   for (unsigned i = 0; i < N; ++i) {
     if (args->valid[i] != -1) continue;
@@ -333,7 +334,7 @@ void occludedWith(const RTCOccludedFunctionNArguments* args, Geometry::Payload& 
     double hi = meridian.hi;
     bool found;
     if (filtered) {
-      FilteredAny<kCount, kCurve> visitor{args, shape, meridian, ray, i, stats};
+      FilteredAny<kCount, kCurve> visitor{args, payload, shape, meridian, ray, i, stats};
       searchShape<kCount>(shape, meridian, hi, visitor, stats);
       found = visitor.found;
     } else {
@@ -348,7 +349,7 @@ void occludedWith(const RTCOccludedFunctionNArguments* args, Geometry::Payload& 
 
 template <bool kCount>
 void occludedCallback(const RTCOccludedFunctionNArguments* args) {
-  auto& payload = *static_cast<Geometry::Payload*>(args->geometryUserPtr);
+  auto& payload = *static_cast<GeometryPayload*>(args->geometryUserPtr);
   if (payload.shape->curved()) {
     occludedWith<kCount, true>(args, payload);
   } else {

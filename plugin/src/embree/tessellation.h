@@ -1,7 +1,7 @@
 // The tessellated baseline: the profile swept in `slices` steps as a triangle mesh.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <cstdint>
 #include <vector>

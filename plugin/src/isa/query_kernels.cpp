@@ -5,15 +5,11 @@ namespace revolve::detail {
 extern const QueryKernels queryKernelsSse2;
 extern const QueryKernels queryKernelsAvx2;
 
-namespace {
-
 // x86-64-v3 as the AVX2 copy is compiled for it; every CPU with AVX2 and FMA has the rest.
 bool cpuRunsAvx2() noexcept {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
 }
-
-}  // namespace
 
 const QueryKernels* queryKernelsFor(Isa isa) noexcept {
   switch (isa) {

@@ -2,7 +2,6 @@
 // (query_kernels_sse2.cpp, query_kernels_avx2.cpp), which defines its QueryKernels table from them.
 #pragma once
 
-#include "embree/ray_callbacks.h"
 #include "isa/query_kernels.h"
 #include "shape/shape_search.h"
 #include "shape/surface_hit.h"
@@ -12,7 +11,7 @@ namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
 template <bool kCount, bool kCurve>
-std::optional<Hit> nearestHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
+std::optional<Hit> nearestHit(const detail::ShapeImpl& shape, const Ray& ray, Stats& stats) noexcept {
   if constexpr (kCount) ++stats.rays;
   MeridianRay meridian;
   if (!setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
@@ -24,7 +23,7 @@ std::optional<Hit> nearestHit(const Shape::Impl& shape, const Ray& ray, Stats& s
 }
 
 template <bool kCount, bool kCurve>
-bool anyHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
+bool anyHit(const detail::ShapeImpl& shape, const Ray& ray, Stats& stats) noexcept {
   if constexpr (kCount) ++stats.rays;
   MeridianRay meridian;
   if (!setUpMeridianRay(shape.frame, ray, meridian)) return false;
@@ -34,13 +33,13 @@ bool anyHit(const Shape::Impl& shape, const Ray& ray, Stats& stats) noexcept {
   return any.found;
 }
 
-inline std::optional<Hit> intersectEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
+inline std::optional<Hit> intersectEntry(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept {
   Stats unused;
   if (shape.curved()) return stats != nullptr ? nearestHit<true, true>(shape, ray, *stats) : nearestHit<false, true>(shape, ray, unused);
   return stats != nullptr ? nearestHit<true, false>(shape, ray, *stats) : nearestHit<false, false>(shape, ray, unused);
 }
 
-inline bool occludedEntry(const Shape::Impl& shape, const Ray& ray, Stats* stats) noexcept {
+inline bool occludedEntry(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept {
   Stats unused;
   if (shape.curved()) return stats != nullptr ? anyHit<true, true>(shape, ray, *stats) : anyHit<false, true>(shape, ray, unused);
   return stats != nullptr ? anyHit<true, false>(shape, ray, *stats) : anyHit<false, false>(shape, ray, unused);
@@ -50,8 +49,6 @@ inline constexpr QueryKernels kQueryKernels{
     REVOLVE_ISA_NAME,
     intersectEntry,
     occludedEntry,
-    {intersectCallback<false>, intersectCallback<true>},
-    {occludedCallback<false>, occludedCallback<true>},
 };
 
 }  // namespace REVOLVE_ISA

@@ -11,7 +11,7 @@
 // Ballard's farthest-point split can make the tree as deep as the profile is long.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "kernel/shell_tests.h"
 

@@ -3,7 +3,7 @@
 
 #include "kernel/shell_tests.h"
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <span>
 

@@ -34,7 +34,7 @@
 #include "kernel/segment_hits.h"
 #include "util/rounding.h"
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +52,7 @@ struct CurvePart {
   double u0, u1;        // its parameter range in that piece
   double v0, dv;        // v (normalised arc length) at its start, and its growth along it
   double length;        // its arc length
-  // Its table of v in Shape::Impl::arcTable: v and dv/du at u = k / arcSteps, k = 0 .. arcSteps,
+  // Its table of v in detail::ShapeImpl::arcTable: v and dv/du at u = k / arcSteps, k = 0 .. arcSteps,
   // interleaved, from which a hit's v is interpolated (curve/arc_length.h).
   std::uint32_t arcOffset, arcSteps;
 };

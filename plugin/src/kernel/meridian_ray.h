@@ -8,7 +8,7 @@
 // even ill-conditioned (near-tangent) roots, which lose half the digits, stay within a float ulp.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "util/isa.h"
 #include "util/rounding.h"

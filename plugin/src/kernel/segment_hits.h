@@ -26,7 +26,7 @@
 #include "kernel/bracketed_roots.h"
 #include "kernel/meridian_ray.h"
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {

@@ -14,7 +14,7 @@
 // split" variant (where runs are not monotone), are stored.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "kernel/shell_tests.h"
 

@@ -15,7 +15,7 @@
 // shell never prunes a segment whose double-precision leaf computation reports a hit.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "kernel/meridian_ray.h"
 #include "mibit/mibit_tree.h"

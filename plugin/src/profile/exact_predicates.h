@@ -1,7 +1,7 @@
 // Exact geometric predicates on double coordinates (floating-point filter, exact fallback).
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 namespace revolve::detail {
 

@@ -1,7 +1,7 @@
 // Exact equality of profile points, as validation and the self-intersection sweep use it.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 namespace revolve::detail {
 

@@ -1,6 +1,6 @@
 // Profile validation: every rule is checked once, here, with a message naming the point, its value
 // and the rule, so that nothing downstream (tree builders, kernels) has to guard against bad input.
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "profile/points.h"
 #include "profile/self_intersection.h"

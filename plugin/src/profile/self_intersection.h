@@ -1,7 +1,7 @@
 // Detects whether a profile polyline crosses or touches itself, in O(n log n).
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <cstddef>
 #include <optional>

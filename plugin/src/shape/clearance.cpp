@@ -103,7 +103,7 @@ Candidate segmentMinimum(const Rect& q, Point2 a, Point2 b) {
 // Best-first search of the profile for the least signed distance, pruned by meridian boxes.
 class ClearanceSearch {
  public:
-  ClearanceSearch(const Shape::Impl& shape, const Rect& rect, double radial, double axial)
+  ClearanceSearch(const detail::ShapeImpl& shape, const Rect& rect, double radial, double axial)
       : shape_(shape), rect_(rect), radial_(radial), axial_(axial) {}
 
   void run() {
@@ -139,7 +139,7 @@ class ClearanceSearch {
     if (c.value < best_.value) best_ = c, segment_ = k;
   }
 
-  const Shape::Impl& shape_;
+  const detail::ShapeImpl& shape_;
   Rect rect_;
   double radial_, axial_;
   Candidate best_{std::numeric_limits<double>::infinity(), 0, 0};
@@ -151,7 +151,7 @@ bool finite(double x) { return std::abs(x) < HUGE_VAL; }
 }  // namespace
 
 CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder, MeridianScale scale) noexcept {
-  const Shape::Impl& impl = shape.impl();
+  const detail::ShapeImpl& impl = detail::implOf(shape);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // Written so that NaN fails every test.
   const bool valid = finite(cylinder.axisDistance) && cylinder.axisDistance >= 0 && finite(cylinder.radius) &&

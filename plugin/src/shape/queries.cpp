@@ -23,7 +23,7 @@ double boxDistance2(double rMin, double rMax, double zLow, double zHigh, double 
 // The closest point of the profile's segments to (rho, z), best first, pruned by meridian boxes.
 class ClosestSegment {
  public:
-  ClosestSegment(const Shape::Impl& shape, double rho, double z) : shape_(shape), rho_(rho), z_(z) {}
+  ClosestSegment(const detail::ShapeImpl& shape, double rho, double z) : shape_(shape), rho_(rho), z_(z) {}
 
   void search() {
     detail::searchBestFirst(
@@ -52,7 +52,7 @@ class ClosestSegment {
     if (d2 < best2_) best2_ = d2, segment_ = k, point_ = q;
   }
 
-  const Shape::Impl& shape_;
+  const detail::ShapeImpl& shape_;
   double rho_, z_;
   double best2_ = std::numeric_limits<double>::infinity();
   std::uint32_t segment_ = 0;
@@ -62,16 +62,16 @@ class ClosestSegment {
 }  // namespace
 
 std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
-  return detail::queryKernels().intersect(shape.impl(), ray, stats);
+  return detail::queryKernels().intersect(detail::implOf(shape), ray, stats);
 }
 
 bool occluded(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
-  return detail::queryKernels().occluded(shape.impl(), ray, stats);
+  return detail::queryKernels().occluded(detail::implOf(shape), ray, stats);
 }
 
 namespace detail {
 
-SurfacePoint closestSurfacePoint(const Shape::Impl& impl, Vec3 p) noexcept {
+SurfacePoint closestSurfacePoint(const detail::ShapeImpl& impl, Vec3 p) noexcept {
   const double px = p.x, py = p.y, z = double(p.z) - impl.frame.zCentre;
   if (!(std::abs(px) < HUGE_VAL && std::abs(py) < HUGE_VAL && std::abs(z) < HUGE_VAL)) {
     return {p, std::numeric_limits<float>::quiet_NaN(), 0};  // no point is closest to a non-finite one
@@ -87,6 +87,6 @@ SurfacePoint closestSurfacePoint(const Shape::Impl& impl, Vec3 p) noexcept {
 
 }  // namespace detail
 
-SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept { return detail::closestSurfacePoint(shape.impl(), p); }
+SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept { return detail::closestSurfacePoint(detail::implOf(shape), p); }
 
 }  // namespace revolve

@@ -6,6 +6,6 @@
 namespace revolve::detail {
 
 // The closest surface point to p (see revolve::closestPoint). A non-finite p gives distance NaN.
-SurfacePoint closestSurfacePoint(const Shape::Impl& shape, Vec3 p) noexcept;
+SurfacePoint closestSurfacePoint(const detail::ShapeImpl& shape, Vec3 p) noexcept;
 
 }  // namespace revolve::detail

@@ -1,5 +1,5 @@
 // Spawning secondary rays from a hit without re-hitting the surface (after pbrt-v4's OffsetRayOrigin).
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
 // Smooth shading normals from per-vertex normals along the profile (see revolve.h, ShadingNormals).
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include <algorithm>
 #include <cmath>

@@ -26,7 +26,7 @@ Bounds paddedBounds(double rMax, double zMin, double zMax) {
 }
 
 // The search structures over the local points (a polyline's, or a spline's monotone parts' ends).
-void buildSearch(Shape::Impl& impl, const BuildOptions& options, std::span<const Point2> innerControls) {
+void buildSearch(detail::ShapeImpl& impl, const BuildOptions& options, std::span<const Point2> innerControls) {
   impl.mibit = detail::buildMibitTree(impl.local, options, innerControls);
   // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
   // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
@@ -63,8 +63,8 @@ Stats& Stats::operator+=(const Stats& other) noexcept {
 }
 
 Shape::Shape(Profile profile, const BuildOptions& options)
-    : impl_(std::make_unique<Impl>(std::move(profile), options)) {
-  Impl& impl = *impl_;
+    : impl_(std::make_unique<detail::ShapeImpl>(std::move(profile), options)) {
+  detail::ShapeImpl& impl = *impl_;
   const std::span<const Point2> points = impl.profile.points();
 
   double zMin = points[0].z, zMax = points[0].z, rMax = 0.0;
@@ -162,8 +162,8 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   std::vector<Point2> global;
   global.reserve(knots.size());
   for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
-  impl_ = std::make_unique<Impl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()), options);
-  Impl& impl = *impl_;
+  impl_ = std::make_unique<detail::ShapeImpl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()), options);
+  detail::ShapeImpl& impl = *impl_;
   impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
   impl.arcTable = std::move(arcTable);
@@ -207,8 +207,8 @@ std::size_t Shape::treeNodeCount() const noexcept {
 }
 
 std::size_t Shape::memoryBytes() const noexcept {
-  const Impl& impl = *impl_;
-  return sizeof(Impl) + impl.local.capacity() * sizeof(Point2) + impl.segments.capacity() * sizeof(detail::SegmentFrame) +
+  const detail::ShapeImpl& impl = *impl_;
+  return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) + impl.segments.capacity() * sizeof(detail::SegmentFrame) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
@@ -219,5 +219,7 @@ std::size_t Shape::memoryBytes() const noexcept {
                       : 0) +
          impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
 }
+
+const detail::ShapeImpl& detail::implOf(const Shape& shape) noexcept { return *shape.impl_; }
 
 }  // namespace revolve

@@ -1,7 +1,7 @@
 // What a built Shape holds. Internal: the Embree glue and the queries read it directly.
 #pragma once
 
-#include <revolve/revolve.h>
+#include <revolve/core.h>
 
 #include "kajiya/strip_tree.h"
 #include "kernel/curve_hits.h"
@@ -23,24 +23,23 @@ struct SegmentFrame {
   double v0, dv;      // v at the segment's start, and its growth along the segment
 };
 
-}  // namespace detail
-
-struct Shape::Impl {
-  Impl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
+struct ShapeImpl {
+  ShapeImpl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
 
   Profile profile;  // for a spline shape: its monotone parts' ends
   std::optional<Spline> spline;        // the curve a spline shape traces
-  std::vector<detail::CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
+  std::vector<CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
   std::vector<double> arcTable;          // the parts' tables of v (CurvePart::arcOffset)
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
-  detail::ShapeFrame frame;
+  ShapeFrame frame;
   std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)
-  std::vector<detail::SegmentFrame> segments;  // one per segment
-  detail::MibitTree mibit;      // always built: it also serves closest-point queries and in-plane rays
-  detail::WideTree wide;        // the SIMD layout, for the default options (BuildOptions::wideNodes)
-  detail::StripTree strips;     // built for Method::kajiya only
+  std::vector<SegmentFrame> segments;  // one per segment
+  MibitTree mibit;      // always built: it also serves closest-point queries and in-plane rays
+  WideTree wide;        // the SIMD layout, for the default options (BuildOptions::wideNodes)
+  StripTree strips;     // built for Method::kajiya only
   Bounds bounds;
 };
 
+}  // namespace detail
 }  // namespace revolve

@@ -21,7 +21,7 @@ namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
 template <bool kCount, class VisitSegment>
-inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double& hi, VisitSegment&& visit,
+inline void searchShape(const detail::ShapeImpl& shape, const MeridianRay& ray, double& hi, VisitSegment&& visit,
                         Stats& stats) noexcept {
   switch (shape.options.method) {
     case Method::mibit:
@@ -43,7 +43,7 @@ inline void searchShape(const Shape::Impl& shape, const MeridianRay& ray, double
 }
 
 template <bool kCount, bool kFirstOnly = false>
-inline SegmentHits hitsOfSegment(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
+inline SegmentHits hitsOfSegment(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
                                  Stats& stats) noexcept {
   const SegmentHits hits = segmentHits<kFirstOnly>(ray, shape.local[k], shape.local[k + 1], ray.lo, hi);
   if constexpr (kCount) stats.quadratics += hits.solved;
@@ -52,7 +52,7 @@ inline SegmentHits hitsOfSegment(const Shape::Impl& shape, const MeridianRay& ra
 
 // A spline shape's leaf: its monotone part k (the segment between knots k and k + 1).
 template <bool kCount, bool kFirstOnly = false>
-inline CurveHits hitsOfPart(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
+inline CurveHits hitsOfPart(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
                             Stats& stats) noexcept {
   const CurveHits hits = curveHits<kFirstOnly>(ray, shape.parts[k], ray.lo, hi, shape.frame.sphereRadius);
   if constexpr (kCount) stats.quadratics += hits.solved;
@@ -61,7 +61,7 @@ inline CurveHits hitsOfPart(const Shape::Impl& shape, const MeridianRay& ray, st
 
 // The leaf of either kind of shape: a polyline's segment, or a spline's part (kCurve).
 template <bool kCurve, bool kCount, bool kFirstOnly = false>
-inline auto leafHits(const Shape::Impl& shape, const MeridianRay& ray, std::uint32_t k, double hi, Stats& stats) noexcept {
+inline auto leafHits(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi, Stats& stats) noexcept {
   if constexpr (kCurve) {
     return hitsOfPart<kCount, kFirstOnly>(shape, ray, k, hi, stats);
   } else {
@@ -73,7 +73,7 @@ inline auto leafHits(const Shape::Impl& shape, const MeridianRay& ray, std::uint
 // parameter there.
 template <bool kCount, bool kCurve = false>
 struct NearestHit {
-  const Shape::Impl& shape;
+  const detail::ShapeImpl& shape;
   const MeridianRay& ray;
   double& hi;  // the search's pruning bound, lowered to the best hit
   Stats& stats;
@@ -99,7 +99,7 @@ struct NearestHit {
 // Whether any hit exists: the search ends at the first.
 template <bool kCount, bool kCurve = false>
 struct AnyHit {
-  const Shape::Impl& shape;
+  const detail::ShapeImpl& shape;
   const MeridianRay& ray;
   Stats& stats;
   bool found = false;

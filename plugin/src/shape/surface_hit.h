@@ -24,7 +24,7 @@ inline float callerT(const MeridianRay& ray, const Ray& caller, double s) noexce
   return std::clamp(t, caller.tnear, caller.tfar);
 }
 
-inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ray& caller, double s,
+inline Hit surfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                       std::uint32_t k) noexcept {
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
   const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
@@ -45,7 +45,7 @@ inline Hit surfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ra
 
 // A hit on a spline shape's part k at parameter u. Straight parts are segments (surfaceHit);
 // curved ones take their normal from the curve's tangent at u and v from its arc length up to u.
-inline Hit curveSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
+inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
                            double u) noexcept {
   const CurvePart& part = shape.parts[k];
   if (part.straight) return surfaceHit(shape, ray, caller, s, k);
@@ -77,7 +77,7 @@ inline Hit curveSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, con
 
 // The hit of either kind of shape (u: the part's parameter, spline shapes only).
 template <bool kCurve>
-inline Hit leafSurfaceHit(const Shape::Impl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
+inline Hit leafSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
                           double u) noexcept {
   if constexpr (kCurve) {
     return curveSurfaceHit(shape, ray, caller, s, k, u);
@@ -101,7 +101,7 @@ struct HitAttributes {
   float t[kLanes], nx[kLanes], ny[kLanes], nz[kLanes], u[kLanes], v[kLanes];
 };
 
-inline unsigned surfaceHitLanes(const Shape::Impl& shape, const HitLanes& in, HitAttributes& out) noexcept {
+inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& in, HitAttributes& out) noexcept {
   alignas(32) double f[17][kLanes];  // gathered: ray, segment and caller, lane by lane
   for (int lane = 0; lane < kLanes; ++lane) {
     const MeridianRay& ray = *in.ray[lane];

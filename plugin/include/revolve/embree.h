@@ -1,0 +1,136 @@
+// revolve's Embree glue: a Shape as an Embree user geometry, point queries over Embree scenes,
+// and Embree's own primitives for comparison (a tessellated mesh, a linear cone curve).
+//
+// Built against Embree 3 or Embree 4 (revolve/config.h says which); revolve/embree_api.h includes
+// that Embree's header. The answers are the same with either: the callbacks run the same search.
+#pragma once
+
+#include <revolve/core.h>
+#include <revolve/embree_api.h>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revolve {
+
+namespace detail {
+struct GeometryPayload;  // what the callbacks receive as user data: private to the library
+}  // namespace detail
+
+// An Embree user geometry that traces a Shape: bounds, intersect and occluded callbacks for
+// packets of 1, 4, 8 and 16 rays, filter functions, instancing and point queries. Create it,
+// attach handle() to a scene (rtcAttachGeometry), and keep both the Geometry and the Shape alive
+// while any scene holding the geometry is used (moving the Shape is fine; destroying it is not).
+// One Shape may back any number of Geometries, and a scene holding a Geometry may be instanced any
+// number of times (one instance level). A Geometry owns its Embree handle: moving it moves the
+// handle, destroying it releases it (a scene it is attached to keeps its own reference).
+//
+// A hit writes tfar, Ng, u, v, primID (the profile segment, see Conventions), geomID, and the
+// query context's instID (and instPrimID, with an Embree 4 built with instance arrays).
+class Geometry {
+ public:
+  struct Options {
+    bool countStats = false;  // accumulate Stats (slower); read them with stats()
+  };
+  // Throws std::runtime_error, with Embree's error code, when Embree cannot create the geometry.
+  Geometry(RTCDevice device, const Shape& shape, Options options);
+  Geometry(RTCDevice device, const Shape& shape) : Geometry(device, shape, Options{}) {}
+  ~Geometry();
+  Geometry(Geometry&& other) noexcept;
+  Geometry& operator=(Geometry&& other) noexcept;
+  Geometry(const Geometry&) = delete;
+  Geometry& operator=(const Geometry&) = delete;
+
+  [[nodiscard]] RTCGeometry handle() const noexcept { return geometry_; }
+
+  // Filter functions. Set the geometry's own through these (not rtcSetGeometry*FilterFunction
+  // directly): a user geometry's callback must offer each candidate hit to the filters itself, and
+  // does so only when one may apply, so revolve needs to know. Pass nullptr to remove a filter.
+  // Commit the geometry afterwards.
+  void setIntersectFilter(RTCFilterFunctionN filter) noexcept;
+  void setOcclusionFilter(RTCFilterFunctionN filter) noexcept;
+  // Filter functions passed with a query. Embree 3 calls a context's filter for every geometry
+  // (with RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION on the scene); revolve's callbacks do the same.
+  // Embree 4 calls an argument filter (RTC_SCENE_FLAG_FILTER_FUNCTION_IN_ARGUMENTS on the scene)
+  // for the geometries enabled by rtcSetGeometryEnableFilterFunctionFromArguments, or for all with
+  // RTC_RAY_QUERY_FLAG_INVOKE_ARGUMENT_FILTER, but never for user geometries by itself; revolve's
+  // callbacks call it as Embree does for a triangle mesh, after the geometry's own filter. Enable
+  // it for this geometry through this call (it also makes Embree's call); no effect with Embree 3.
+  void enableFilterFunctionFromArguments(bool enable) noexcept;
+  // Whether the callbacks can reach a query's argument filter (Embree 4): checked once per process
+  // by tracing one probe ray; false means argument filters are not called on revolve's geometries
+  // with this Embree build. Always true with Embree 3.
+  [[nodiscard]] static bool argumentFiltersSupported(RTCDevice device);
+
+  [[nodiscard]] Stats stats() const noexcept;  // zero unless Options::countStats
+
+ private:
+  RTCGeometry geometry_ = nullptr;
+  std::unique_ptr<detail::GeometryPayload> payload_;  // Embree's user data: stays put when moved
+};
+
+// Closest surface point over an Embree scene (rtcPointQuery), for SoR geometries and instances
+// of scenes holding them. `shapeOf` maps (instID, geomID) to the Geometry that was attached under
+// that geomID in the scene that instance instID shows (instID is RTC_INVALID_GEOMETRY_ID for
+// geometries attached to `scene` itself); return nullptr for geometries to skip.
+struct ScenePoint {
+  Vec3 point;     // world space
+  float distance;
+  unsigned geomID;
+  unsigned instID;  // RTC_INVALID_GEOMETRY_ID when not instanced
+  std::uint32_t segment;
+};
+using GeometryLookup = const Geometry* (*)(void* user, unsigned instID, unsigned geomID);
+std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup,
+                                       void* user);
+
+// A triangle mesh of the profile swept in `slices` steps (2 * segments * slices triangles, vertices
+// on the exact circles), committed and ready to attach: the tessellated baseline. Throws
+// std::invalid_argument when slices < 3 or the triangle count exceeds 32-bit indices.
+RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std::uint32_t slices);
+// A bound on the Hausdorff distance between that mesh and the exact surface: r_max (1 - cos(pi /
+// slices)), the gap between a circle and its inscribed polygon at the largest radius; exact when
+// that radius lies on a vertical segment (elsewhere the gap normal to the surface is smaller).
+double tessellationError(const Profile& profile, std::uint32_t slices);
+
+// Embree's own linear cone curve (RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE) with its centre line on the z
+// axis: the baseline an Embree user tries first. Each profile segment that rises or falls is one
+// truncated cone, traced by Embree's single-precision kernel; a first or last segment running
+// horizontally from the axis is the curve's flat end disc (RTC_CURVE_FLAG_NEIGHBOR_LEFT / _RIGHT
+// are set everywhere else). It cannot trace a horizontal segment anywhere else (a rim, a step, a
+// flat shoulder), nor an open end off the axis (Embree would close it with a disc); a loop and a
+// point on the axis between segments are fine. Embree's Ng points away from the axis on the cones
+// and away from its cone on a disc, whichever side the solid lies on.
+//
+// Why `profile` cannot be traced as one linear cone curve, naming the points concerned; nothing
+// when it can.
+std::optional<std::string> coneCurveLimitation(const Profile& profile);
+
+class ConeCurveGeometry {
+ public:
+  // Builds and commits the curve (buffers of 16 bytes a point); attach handle() to a scene. Throws
+  // std::invalid_argument with coneCurveLimitation's reason when the profile cannot be one curve.
+  ConeCurveGeometry(RTCDevice device, const Profile& profile);
+  ~ConeCurveGeometry();
+  ConeCurveGeometry(const ConeCurveGeometry&) = delete;
+  ConeCurveGeometry& operator=(const ConeCurveGeometry&) = delete;
+
+  RTCGeometry handle() const noexcept { return geometry_; }
+  std::uint32_t coneCount() const noexcept { return std::uint32_t(rising_.size()); }
+  // The profile segment (as Conventions number them) of a hit with Embree's primID, u and Ng: a hit
+  // on an end disc (u exactly 0 or 1, Ng along the axis) is the horizontal segment it stands for.
+  std::uint32_t profileSegment(unsigned primID, float u, Vec3 ng) const noexcept;
+  // +1 or -1: Embree's Ng times this points to revolve's side (Conventions) for hits on cone primID.
+  float normalSign(unsigned primID) const noexcept { return float(rising_[primID]); }
+
+ private:
+  RTCGeometry geometry_ = nullptr;
+  std::vector<std::int8_t> rising_;
+  std::uint32_t firstSegment_ = 0;
+  bool startDisc_ = false, endDisc_ = false;
+};
+
+}  // namespace revolve

@@ -1,0 +1,18 @@
+// Embree's intersect and occluded callbacks for a revolve::Geometry, compiled once per instruction
+// set like the pure queries (isa/query_kernels.h), and the choice of the copy this CPU runs.
+#pragma once
+
+#include <revolve/embree_api.h>
+
+namespace revolve::detail {
+
+struct CallbackKernels {
+  const char* isa;
+  RTCIntersectFunctionN intersect[2];  // indexed by Geometry::Options::countStats
+  RTCOccludedFunctionN occluded[2];
+};
+
+// The callbacks for the best instruction set this CPU supports, chosen once.
+const CallbackKernels& callbackKernels() noexcept;
+
+}  // namespace revolve::detail

@@ -1,0 +1,19 @@
+// The callbacks of one instruction set: include once, from that set's translation unit
+// (callback_kernels_sse2.cpp, callback_kernels_avx2.cpp), which defines its table from them.
+#pragma once
+
+#include "embree/callback_kernels.h"
+#include "embree/ray_callbacks.h"
+#include "util/isa.h"
+
+namespace revolve::detail {
+inline namespace REVOLVE_ISA {
+
+inline constexpr CallbackKernels kCallbackKernels{
+    REVOLVE_ISA_NAME,
+    {intersectCallback<false>, intersectCallback<true>},
+    {occludedCallback<false>, occludedCallback<true>},
+};
+
+}  // namespace REVOLVE_ISA
+}  // namespace revolve::detail
