@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages revolve needs, skipping those already installed.
+# Installs the Debian packages revolve needs, skipping those already installed: Debian 12
+# (bookworm: Embree 3.13, clang 14) or Debian 13 (trixie: Embree 4.3, clang 19), read from
+# /etc/os-release. The names below are the same on both (libclang-rt-dev is each release's
+# clang runtime: libclang-rt-14-dev on Debian 12, libclang-rt-19-dev on Debian 13).
 # Usage: scripts/install-deps.sh [--test]
 #   (none)   what the main job builds and runs: the library and revolve-render
 #   --test   also what the whole test suite and the benchmarks need: GoogleTest, Google Benchmark,
@@ -18,8 +21,21 @@ packages=(
 )
 case "${1:-}" in
   "") ;;
-  --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev python3-matplotlib povray fonts-dejavu-core) ;;
+  --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-dev python3-matplotlib povray fonts-dejavu-core) ;;
   *) echo "usage: $0 [--test]" >&2; exit 2 ;;
+esac
+
+# The releases these names were checked on. Another Debian may well work; anything else needs the
+# same libraries installed by its own means.
+os_id=$(. /etc/os-release 2>/dev/null && echo "${ID:-unknown}")
+os_version=$(. /etc/os-release 2>/dev/null && echo "${VERSION_ID:-unknown}")
+case "$os_id $os_version" in
+  "debian 12" | "debian 13") ;;
+  debian\ *) echo "$0: Debian $os_version is neither 12 nor 13, whose package names this script knows; trying them anyway" >&2 ;;
+  *)
+    echo "$0: this machine is '$os_id $os_version' (/etc/os-release), not Debian 12 or 13: install Embree 3.13 or 4.x," \
+         "TBB, CLI11, nlohmann-json and OpenImageIO by its own means (Debian's names: ${packages[*]})" >&2
+    exit 1 ;;
 esac
 
 missing=()
