@@ -4,14 +4,15 @@
     bench/plot_results.py bench/results/revolve-bench.json OUTDIR [FIGURE...]
 
 writes OUTDIR/speed_vs_error.png (incoherent rays, rtcIntersect1), OUTDIR/speed_vs_error_camera.png
-(camera rays, rtcIntersect8), OUTDIR/memory_vs_error.png, OUTDIR/scaling.png and
+(camera rays, rtcIntersect8), OUTDIR/speed_vs_error_shadow.png (shadow rays, rtcOccluded1),
+OUTDIR/memory_vs_error.png, OUTDIR/scaling.png and
 OUTDIR/embree_curves.png (MIBIT, the best mesh and Embree's own curves per shape, and their scaling).
 Every point is a figure of the JSON; meshes are drawn as their whole grid with the best of them per
 error joined; the spline traced exactly is a star, its polylines (adaptive, evenly spaced) and the
 adaptive polylines' meshes are lines. Configurations a method cannot trace (their "limitation") have
 no figures to draw.
-Naming FIGUREs (speed_vs_error, speed_vs_error_camera, memory_vs_error, scaling, embree_curves)
-draws only those.
+Naming FIGUREs (speed_vs_error, speed_vs_error_camera, speed_vs_error_shadow, memory_vs_error,
+scaling, embree_curves) draws only those.
 """
 import json
 import os
@@ -40,7 +41,8 @@ STYLE = {
 
 
 def error_of(config, mode):
-    error = config["error_camera"] if mode.startswith("camera") else config["error_incoherent"]
+    camera = mode.startswith("camera") or mode == "occluded_8"  # occluded_8 shadows along the camera rays
+    error = config["error_camera"] if camera else config["error_incoherent"]
     return error["residual_max"] if error else None
 
 
@@ -196,7 +198,7 @@ def embree_curves_figure(shapes, scaling, machine, path):
     plt.close(fig)
 
 
-FIGURES = ("speed_vs_error", "speed_vs_error_camera", "memory_vs_error", "scaling", "embree_curves")
+FIGURES = ("speed_vs_error", "speed_vs_error_camera", "speed_vs_error_shadow", "memory_vs_error", "scaling", "embree_curves")
 
 
 def main():
@@ -219,6 +221,9 @@ def main():
     if shapes and "speed_vs_error_camera" in wanted:
         grid_figure(shapes, lambda ax, s: speed_panel(ax, s, "camera_8"), "Mrays/s (1 thread)",
                     f"Speed against error: camera rays, rtcIntersect8 ({machine})", os.path.join(out, "speed_vs_error_camera.png"))
+    if shapes and "speed_vs_error_shadow" in wanted:
+        grid_figure(shapes, lambda ax, s: speed_panel(ax, s, "occluded_1"), "Mrays/s (1 thread)",
+                    f"Speed against error: shadow rays, rtcOccluded1 ({machine})", os.path.join(out, "speed_vs_error_shadow.png"))
     if shapes and "memory_vs_error" in wanted:
         grid_figure(shapes, memory_panel, "bytes (revolve + Embree)", f"Memory against error ({machine})",
                     os.path.join(out, "memory_vs_error.png"))

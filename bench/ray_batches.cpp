@@ -77,4 +77,29 @@ std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray
   };
 }
 
+std::function<std::size_t()> occludedBatch(RTCScene scene, const std::vector<Ray>& rays) {
+  return [scene, &rays, cursor = std::size_t{0}]() mutable {
+    embree::RayQuery query;
+    for (std::size_t i = 0; i < kBatchRays; ++i) {
+      RTCRay ray = app::embreeRayHit(rays[cursor]).ray;
+      query.occluded(scene, ray);
+      if (++cursor == rays.size()) cursor = 0;
+    }
+    return kBatchRays;
+  };
+}
+
+std::function<std::size_t()> occludedPacketBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets) {
+  return [scene, packets, cursor = std::size_t{0}]() mutable {
+    embree::RayQuery query;
+    alignas(32) const int valid[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    for (std::size_t i = 0; i < kBatchRays / 8; ++i) {
+      RTCRay8 packet = (*packets)[cursor].ray;
+      query.occluded(valid, scene, packet);
+      if (++cursor == packets->size()) cursor = 0;
+    }
+    return kBatchRays;
+  };
+}
+
 }  // namespace revolve::bench

@@ -1,5 +1,6 @@
 // The ways a benchmark traces rays through Embree, each as a batch function for the timer: one ray
-// at a time (rtcIntersect1), packets of eight (rtcIntersect8), and rtcIntersect1 on all threads.
+// at a time (rtcIntersect1), packets of eight (rtcIntersect8), rtcIntersect1 on all threads, and
+// shadow rays (rtcOccluded1, rtcOccluded8).
 // Every batch walks its ray set cyclically from where the previous batch stopped.
 #pragma once
 
@@ -19,5 +20,7 @@ std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>&
 std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ray>& rays);
 std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets);
 std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray>& rays);
+std::function<std::size_t()> occludedBatch(RTCScene scene, const std::vector<Ray>& rays);
+std::function<std::size_t()> occludedPacketBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets);
 
 }  // namespace revolve::bench

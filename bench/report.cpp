@@ -30,6 +30,8 @@ const char* modeTitle(const std::string& mode) {
   if (mode == kIncoherent1) return "incoherent rays, rtcIntersect1, 1 thread";
   if (mode == kCamera1) return "camera rays, rtcIntersect1, 1 thread";
   if (mode == kCamera8) return "camera rays, rtcIntersect8, 1 thread";
+  if (mode == kOccluded1) return "shadow rays: the incoherent rays, rtcOccluded1, 1 thread";
+  if (mode == kOccluded8) return "shadow rays: the camera rays, rtcOccluded8, 1 thread";
   return "incoherent rays, rtcIntersect1, all threads";
 }
 
@@ -118,8 +120,9 @@ void printShape(std::FILE* out, const ShapeResult& shape) {
                "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays; errors, hits, hit/miss "
                "disagreements and hits on another sheet than the first (\"other\") of the incoherent rays)\n",
                shape.name.c_str(), shape.size, shape.incoherentRays, shape.cameraRays);
-  std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s | %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max", "err p99",
-               "normal p99", "hits", "disagree", "other", "inc 1", "cam 1", "cam 8", "inc all", "revolve", "embree", "build ms");
+  std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s | %8s %8s %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max",
+               "err p99", "normal p99", "hits", "disagree", "other", "inc 1", "cam 1", "cam 8", "inc all", "occ 1", "occ 8",
+               "revolve", "embree", "build ms");
   for (const ConfigResult& c : shape.configs) {
     if (!c.limitation.empty()) {
       std::fprintf(out, "%-25s cannot: %s\n", c.config.label().c_str(), c.limitation.c_str());
@@ -138,9 +141,9 @@ void printShape(std::FILE* out, const ShapeResult& shape) {
     } else {
       std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s |", c.config.label().c_str(), "-", "-", "-", "-", "-", "-");
     }
-    std::fprintf(out, " %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(), speed(kCamera1).c_str(),
-                 speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(), bytesText(double(c.revolveBytes)).c_str(),
-                 bytesText(double(c.embreeBytes)).c_str(), 1e3 * c.buildSeconds);
+    std::fprintf(out, " %8s %8s %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(), speed(kCamera1).c_str(),
+                 speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(), speed(kOccluded1).c_str(), speed(kOccluded8).c_str(),
+                 bytesText(double(c.revolveBytes)).c_str(), bytesText(double(c.embreeBytes)).c_str(), 1e3 * c.buildSeconds);
   }
 }
 
@@ -153,7 +156,7 @@ std::string noPick(const ShapeResult& shape, MethodKind kind) {
 }
 
 void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
-  for (const char* mode : {kIncoherent1, kCamera8, kCamera1, kIncoherentAll}) {
+  for (const char* mode : kModes) {
     std::fprintf(out,
                  "\nMatched error: fastest MIBIT against fastest mesh, and Embree's fastest cone and round curves, with "
                  "max error <= level (%s; Mrays/s)\n",

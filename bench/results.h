@@ -17,6 +17,10 @@ inline constexpr const char* kIncoherent1 = "incoherent_1";      // rtcIntersect
 inline constexpr const char* kCamera1 = "camera_1";              // rtcIntersect1, one thread
 inline constexpr const char* kCamera8 = "camera_8";              // rtcIntersect8, one thread
 inline constexpr const char* kIncoherentAll = "incoherent_all";  // rtcIntersect1, all threads
+inline constexpr const char* kOccluded1 = "occluded_1";          // incoherent rays, rtcOccluded1, one thread
+inline constexpr const char* kOccluded8 = "occluded_8";          // camera rays, rtcOccluded8, one thread
+// Every mode, in the order the tables print them.
+inline constexpr const char* kModes[] = {kIncoherent1, kCamera8, kCamera1, kIncoherentAll, kOccluded1, kOccluded8};
 
 struct ConfigResult {
   MethodConfig config;

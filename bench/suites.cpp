@@ -135,6 +135,8 @@ class ShapeBench {
       else if (m == kCamera1) timer.add(name, singleRayBatch(scene.scene(), rays_.camera));
       else if (m == kCamera8) timer.add(name, packetBatch(scene.scene(), rays_.cameraPackets));
       else if (m == kIncoherentAll) timer.add(name, threadedBatch(scene.scene(), rays_.incoherent), true);
+      else if (m == kOccluded1) timer.add(name, occludedBatch(scene.scene(), rays_.incoherent));
+      else if (m == kOccluded8) timer.add(name, occludedPacketBatch(scene.scene(), rays_.cameraPackets));
       else throw std::logic_error("unknown timing mode " + m);
     }
   }
@@ -172,7 +174,7 @@ class ShapeBench {
 std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings, const std::vector<std::string>& only) {
   const MemoryMonitor monitor(device);
   const Ladders ladders = laddersFor(settings);
-  const std::vector<const char*> allModes = {kIncoherent1, kCamera1, kCamera8, kIncoherentAll};
+  const std::vector<const char*> allModes(std::begin(kModes), std::end(kModes));
   const std::vector<const char*> incoherentOnly = {kIncoherent1};
   std::vector<ShapeResult> results;
   for (const SmoothProfile& profile : testShapes()) {
@@ -288,8 +290,9 @@ void comparePolylinePoints(ShapeResult& shape, const SmoothProfile& profile) {
 }
 
 void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {
-  for (const char* mode : {kIncoherent1, kCamera1, kCamera8, kIncoherentAll}) {
-    const bool camera = std::string(mode).rfind("camera", 0) == 0;
+  for (const char* mode : kModes) {
+    // Camera rays' errors for the modes that trace them (occluded_8 shadows along the camera rays).
+    const bool camera = std::string(mode).rfind("camera", 0) == 0 || std::string(mode) == kOccluded8;
     for (double level : levels) {
       MatchedRow row{shape.name, mode, level, {}, {}, {}, {}, {}, {}};
       for (std::size_t i = 0; i < shape.configs.size(); ++i) {

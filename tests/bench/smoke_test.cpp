@@ -47,7 +47,7 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
                               "embree_cone", "embree_round_curve", "limitation"});
 
   const std::set<std::string> timedEverywhere = {"mibit", "mesh", "sphere", "embree_cone", "embree_round_curve", "spline"};
-  const std::set<std::string> modes = {"incoherent_1", "camera_1", "camera_8", "incoherent_all"};
+  const std::set<std::string> modes = {"incoherent_1", "camera_1", "camera_8", "incoherent_all", "occluded_1", "occluded_8"};
   ASSERT_EQ(document["speed_error"].size(), 5u);
   // Embree's curves take these shapes (the cone curve: some resolutions) and refuse the others,
   // whose flat rings neither can express (see tests/embree_cone_test.cpp and bench/round_curve.h).
