@@ -105,7 +105,7 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
     for (const json& row : shape["polyline_points"]) {
       for (const char* key : {"sample_points", "adaptive_points", "uniform_points"}) EXPECT_GT(row[key].get<int>(), 1) << name;
     }
-    EXPECT_EQ(shape["matched"].size(), 16u) << name;  // four error levels in four timing modes
+    EXPECT_EQ(shape["matched"].size(), 24u) << name;  // four error levels in six timing modes
   }
   ASSERT_EQ(document["scaling"].size(), 1u);
   std::set<std::string> scaled;
