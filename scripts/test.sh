@@ -7,6 +7,10 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh --test
 jobs=$(nproc)
 
+echo "== documentation links"
+# Every relative link and image of README.md and docs/ names a file (and heading) that exists.
+/usr/bin/python3 scripts/check-links.py
+
 echo "== Release build and tests"
 # Tests and benchmark on explicitly: build/ may have been configured by scripts/main.sh without them.
 scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_DEMOS=ON
