@@ -23,7 +23,8 @@
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
 #include "io/text_files.h"
-#include "reference_ranges.h"
+#include "lidar/reference_ranges.h"
+#include "run_info.h"
 #include "robot/lidar.h"
 #include "robot/sensor_rig.h"
 #include "scene/embree_scene.h"
@@ -36,8 +37,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -134,21 +133,6 @@ std::map<ObjectClass, ClassError> rangeErrors(const io::SceneDescription& scene,
 
 Json errorJson(const ClassError& e) {
   return {{"beams", e.beams}, {"other_hit", e.otherHit}, {"mean_m", e.mean()}, {"max_m", e.max}, {"over_1cm", e.overCentimetre}};
-}
-
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
-  return text;
-}
-
-std::string cpuModel() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  for (std::string line; std::getline(cpuinfo, line);) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  }
-  return "unknown";
 }
 
 struct Options {
@@ -267,8 +251,8 @@ void run(const Options& options, const std::string& commandLine) {
                           {"max_angle", s.horizontal.maxAngle}, {"elevations", s.elevations}, {"position", s.pose.position}});
   }
   const Json result{{"command", commandLine},
-                    {"date", today()},
-                    {"machine", {{"cpu", cpuModel()}, {"threads", all}}},
+                    {"date", bench::today()},
+                    {"machine", {{"cpu", bench::cpuModel()}, {"threads", all}}},
                     {"scene", options.scene},
                     {"poses", poses.size()},
                     {"sensors", sensorJson},
