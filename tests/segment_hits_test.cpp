@@ -15,8 +15,9 @@
 // point within R of the centre, radius(z) <= R in the slab) bound g's error by
 //   C: 40 u R^2 ez^2 (rho^2, meridian_ray.h) + 16 u R^2 |ez| len (2 |L| dL, dL <= 8 u R len) + 9 u R^2 ez^2
 //   2 B x: 32 u R^2 ez^2 + 44 u R^2 |ez| len + 8 u R^2 |ez| len;  A x^2: 44 u R^2 |ez| len
-//   the discriminant's rounding near a tangency, 3 u (B^2 / |A| + |C|) ~ 6 u |C|: 12 u R^2 ez^2
-// in all at most 205 u R^2 |ez| len; so E = 256 u R^2 len / |ez| bounds the error in F. A computed
+//   the discriminant's rounding near a tangency, 3 u (B^2 / |A| + |C|) ~ 6 u |C| <= 60 u R^2 ez^2
+//     (|C| <= ez^2 R^2 + Lm^2, |Lm| <= |ez| (R + len) <= 3 |ez| R)
+// in all at most 253 u R^2 |ez| len; so E = 256 u R^2 len / |ez| bounds the error in F. A computed
 // root is then where the exact F is within E of 0: in the component of {s : |F(s)| <= E} around
 // the exact root (widened by the root formula's own rounding, a few u |s - m| <= 16 u R). The
 // long-double reference rounds 2^-11 u relative: 2^15 times below E. Where such a component
@@ -24,8 +25,8 @@
 // tnear / tfar), holds other than one root (a tangency) or passes an apex within the touch's
 // tolerance (addApexTouch), the exact answer is within rounding of another and either is right:
 // the count there is not checked, only that every hit lies in some component.
-#include "kernel/segment_hits.h"
 #include "kernel/meridian_ray.h"
+#include "kernel/segment_hits.h"
 #include "support/test_scale.h"
 #include "support/test_seeds.h"
 
@@ -95,7 +96,8 @@ Expansion coneFunction(const MeridianRay& ray, Point2 p0, Point2 p1, Real c) {
   const Real px = ray.ox + c * Real(ray.dx), py = ray.oy + c * Real(ray.dy), z = ray.oz + c * Real(ray.dz);
   const Real radius = p0.r + (z - p0.z) * k;
   const Real dx = ray.dx, dy = ray.dy, dz = ray.dz;
-  return {c, dx * dx + dy * dy - k * k * dz * dz, px * dx + py * dy - k * dz * radius, px * px + py * py - radius * radius};
+  return {c, dx * dx + dy * dy - k * k * dz * dz, px * dx + py * dy - k * dz * radius,
+          px * px + py * py - radius * radius};
 }
 
 struct Interval {
@@ -135,9 +137,10 @@ struct Component {
   bool fragile;
 };
 
-std::vector<Component> analyse(const MeridianRay& ray, Point2 p0, Point2 p1, double R) {
+// E: the bound on F's error; by default the file comment's, which holds wherever the kernel expands.
+std::vector<Component> analyse(const MeridianRay& ray, Point2 p0, Point2 p1, double R, Real E = 0) {
   const double ez = p1.z - p0.z, len = std::hypot(p1.r - p0.r, ez);
-  const Real E = 256 * u * R * R * len / std::abs(ez);
+  if (E == 0) E = 256 * u * R * R * len / std::abs(ez);
   const Real rootRounding = 16 * u * R;
   const Real lo = ray.lo, hi = ray.hi;
   // The segment's stretch of the line (exact), and how far the kernel's may differ at each end:
@@ -169,7 +172,9 @@ std::vector<Component> analyse(const MeridianRay& ray, Point2 p0, Point2 p1, dou
     if (apex.r != 0.0) continue;
     const Real ax = -Real(ray.ox), ay = -Real(ray.oy), az = apex.z - Real(ray.oz);
     const Real s = ax * ray.dx + ay * ray.dy + az * ray.dz;  // closest approach (|d| = 1 within 2^-52)
-    if (std::hypot(ax - s * ray.dx, ay - s * ray.dy, az - s * ray.dz) <= ray.lineSlack + 32 * u * R) zones.push_back({s, s});
+    if (std::hypot(ax - s * ray.dx, ay - s * ray.dy, az - s * ray.dz) <= ray.lineSlack + 32 * u * R) {
+      zones.push_back({s, s});
+    }
   }
 
   const Real c = stretchEmpty ? 0.5L * (lo + hi) : 0.5L * (stretch.lo + stretch.hi);
@@ -263,17 +268,20 @@ void checkAnnulus(const MeridianRay& ray, Point2 p0, Point2 p1, double R, const 
   }
 }
 
-// Rays aimed at a random point near the segment's surface, of several kinds.
+// Rays from 3 R away aimed at a random point near the segment's surface (within a tenth of its
+// length), of several kinds.
 enum class RayKind { oblique, shallow, inPlane, vertexPlane, clipped };
 
 Ray randomRay(std::mt19937_64& random, Point2 p0, Point2 p1, double R, RayKind kind) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double along = unit(random), phi = 2.0 * std::numbers::pi * unit(random);
-  const double r = std::max(0.0, p0.r + along * (p1.r - p0.r) + 0.1 * R * (unit(random) - 0.5));
-  const double z = p0.z + along * (p1.z - p0.z) + 0.1 * R * (unit(random) - 0.5);
+  const double near = 0.1 * std::hypot(p1.r - p0.r, p1.z - p0.z);
+  const double r = std::max(0.0, p0.r + along * (p1.r - p0.r) + near * (unit(random) - 0.5));
+  const double z = p0.z + along * (p1.z - p0.z) + near * (unit(random) - 0.5);
   const Vec3 target{float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
   // An origin 3 R away, on a uniform direction.
-  const double cz = 2.0 * unit(random) - 1.0, psi = 2.0 * std::numbers::pi * unit(random), sz = std::sqrt(1.0 - cz * cz);
+  const double cz = 2.0 * unit(random) - 1.0, psi = 2.0 * std::numbers::pi * unit(random),
+               sz = std::sqrt(1.0 - cz * cz);
   Vec3 origin{float(3.0 * R * sz * std::cos(psi)), float(3.0 * R * sz * std::sin(psi)), float(3.0 * R * cz)};
   switch (kind) {
     case RayKind::shallow:  // rising or falling by 10^-1 to 10^-4 of its run
@@ -287,7 +295,8 @@ Ray randomRay(std::mt19937_64& random, Point2 p0, Point2 p1, double R, RayKind k
       origin = {float(3.0 * R * std::cos(psi)), float(3.0 * R * std::sin(psi)), height};
       return {origin, {target.x - origin.x, target.y - origin.y, 0.0f}};
     }
-    default: break;
+    default:
+      break;
   }
   Ray ray{origin, {target.x - origin.x, target.y - origin.y, target.z - origin.z}};
   if (kind == RayKind::clipped) {  // a range ending near the target, where hits are
@@ -300,10 +309,18 @@ Ray randomRay(std::mt19937_64& random, Point2 p0, Point2 p1, double R, RayKind k
 struct NamedSegment {
   const char* name;
   Point2 p0, p1;
+  double sphereRadius = 0.0;  // of the profile it belongs to; 0: the segment's own
 };
 
+detail::ShapeFrame frameOf(const NamedSegment& segment) {
+  return segment.sphereRadius == 0.0 ? frameHolding(segment.p0, segment.p1)
+                                     : detail::makeShapeFrame(0.0, segment.sphereRadius);
+}
+
 // Every kind of segment: oblique both ways, vertical (a cylinder), horizontal (annuli and a disc),
-// an apex at either end, nearly flat (to 1e-7) and nearly vertical, a wide cone close to the axis.
+// an apex at either end, nearly flat (to 1e-7) and nearly vertical, a wide cone close to the axis;
+// and small segments of a larger profile (1/2,000 of its bounding sphere), far from its centre,
+// where the kernel's expansion about its own stretch keeps the coefficients of the segment's size.
 const NamedSegment kSegments[] = {
     {"oblique, rising", {0.5, -0.5}, {1.0, 0.75}},
     {"oblique, falling", {1.0, 0.75}, {0.5, -0.5}},
@@ -321,10 +338,14 @@ const NamedSegment kSegments[] = {
     {"annulus, outwards", {0.25, 0.5}, {1.0, 0.5}},
     {"annulus, inwards", {1.0, -0.5}, {0.375, -0.5}},
     {"disc", {0.0, 0.25}, {1.0, 0.25}},
+    {"small, oblique, far from the centre", {0.75, -0.5}, {0.7505, -0.4996}, 1.0},
+    {"small, vertical, far from the centre", {0.75, -0.5}, {0.75, -0.4995}, 1.0},
+    {"small, nearly flat, far from the centre", {0.75, 0.5}, {0.7505, 0.5 + 1e-9}, 1.0},
+    {"small, nearly flat, falling", {0.7505, 0.5}, {0.75, 0.5 - 1e-9}, 1.0},
 };
 
 TEST(SegmentHits, AgreeWithTheClosedFormOfTheConeWithinTheKernelsErrorBound) {
-  const RayKind kinds[] = {RayKind::oblique, RayKind::oblique, RayKind::oblique, RayKind::shallow,
+  const RayKind kinds[] = {RayKind::oblique, RayKind::oblique,     RayKind::oblique, RayKind::shallow,
                            RayKind::inPlane, RayKind::vertexPlane, RayKind::clipped, RayKind::clipped};
   const std::size_t raysPerSegment = testing::scaledRays(8000);
   for (const std::uint64_t seed : testing::testSeeds({0x5e9, 0x5ea})) {
@@ -332,7 +353,7 @@ TEST(SegmentHits, AgreeWithTheClosedFormOfTheConeWithinTheKernelsErrorBound) {
     std::mt19937_64 random(seed);
     for (const NamedSegment& segment : kSegments) {
       SCOPED_TRACE(segment.name);
-      const detail::ShapeFrame frame = frameHolding(segment.p0, segment.p1);
+      const detail::ShapeFrame frame = frameOf(segment);
       const double R = frame.sphereRadius;
       Tally tally;
       for (std::size_t i = 0; i < raysPerSegment; ++i) {
@@ -351,6 +372,63 @@ TEST(SegmentHits, AgreeWithTheClosedFormOfTheConeWithinTheKernelsErrorBound) {
       EXPECT_GT(tally.robustHits, tally.rays / 4);
       EXPECT_LT(tally.fragile, tally.rays / 50 + 1);
     }
+  }
+}
+
+TEST(SegmentHits, NearTangentRootsKeepTheDigitsOfTheirNeighbourhood) {
+  // A needle, the cylinder of radius r0 = 2^-10 R, and rays grazing it (passing the axis at
+  // r0 (1 +- 10^-4)), from anywhere along a slab of height 1.8 R. Where the discriminant about the
+  // middle of the ray's stretch has lost over 20 bits (computed here in long double, with 2 bits to
+  // spare: 2^-22), the kernel expands g again about its extremum, next to the roots (segment_hits.h),
+  // and its coefficients then carry the rounding of that neighbourhood rather than of the stretch's
+  // middle, R away. Divided by ez^2 (er = 0, so L = r0 ez rounds once): rho^2 at the extremum
+  // (px, py within 3 u R each, rho ~ r0) errs by 8.5 u R r0; 2 B x by 2 (4.3 u R) |x| <= 9 u R r0
+  // (|x| <= r0 for roots this near tangency); the squares', L^2's and the discriminant's own
+  // rounding by 14 u r0^2. So E = 32 u R r0 bounds F's error, here 2^-10 of the stretch-wide bound.
+  const double r0 = 0x1p-10;
+  const NamedSegment needle{"needle", {r0, -0.9}, {r0, 0.9}, 1.0};
+  const detail::ShapeFrame frame = frameOf(needle);
+  const double R = frame.sphereRadius;
+  const Real E = 32 * u * R * r0;
+  for (const std::uint64_t seed : testing::testSeeds({0x7a9})) {
+    SCOPED_TRACE(testing::seedTrace(seed));
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::size_t grazing = 0, robust = 0;
+    for (std::size_t i = 0; i < testing::scaledRays(20000); ++i) {
+      const double phi = 2.0 * std::numbers::pi * unit(random), d = r0 * (1.0 + 1e-4 * (2.0 * unit(random) - 1.0));
+      const double v = (0.2 + 0.7 * unit(random)) * (unit(random) < 0.5 ? -1.0 : 1.0), h = std::sqrt(1.0 - v * v);
+      const double tx = -std::sin(phi) * h, ty = std::cos(phi) * h, zT = unit(random) - 0.5;
+      const Ray ray{{float(d * std::cos(phi) - 3.0 * tx), float(d * std::sin(phi) - 3.0 * ty), float(zT - 3.0 * v)},
+                    {float(tx), float(ty), float(v)}};
+      MeridianRay m{};
+      if (!detail::setUpMeridianRay(frame, ray, m)) continue;
+      // The kernel's regime: the discriminant about the middle of the stretch, lost beyond 22 bits.
+      const Real s0 = (Real(needle.p0.z) - m.oz) / Real(m.dz), s1 = (Real(needle.p1.z) - m.oz) / Real(m.dz);
+      const Real c = 0.5L * (std::max(std::min(s0, s1), Real(m.lo)) + std::min(std::max(s0, s1), Real(m.hi)));
+      const Expansion F = coneFunction(m, needle.p0, needle.p1, c);
+      if (!(std::abs(F.B * F.B - F.A * F.C) < 0x1p-22L * (F.B * F.B + std::abs(F.A * F.C)))) continue;
+      ++grazing;
+      const detail::SegmentHits hits = detail::segmentHits(m, needle.p0, needle.p1, m.lo, m.hi);
+      std::vector<int> claimed(hits.count, 0);
+      for (const Component& component : analyse(m, needle.p0, needle.p1, R, E)) {
+        int got = 0;
+        for (int k = 0; k < hits.count; ++k) {
+          if (component.span.holds(hits.s[k])) ++got, ++claimed[k];
+        }
+        if (component.fragile) continue;
+        ASSERT_EQ(got, component.exact) << describe(ray) << ": component [" << double(component.span.lo) << ", "
+                                        << double(component.span.hi) << "]";
+        robust += component.exact > 0;
+      }
+      for (int k = 0; k < hits.count; ++k) {
+        ASSERT_GE(claimed[k], 1) << describe(ray) << ": hit at s=" << hits.s[k]
+                                 << ", |F| = " << double(std::abs(F.at(hits.s[k]))) << " beyond " << double(E);
+      }
+    }
+    // Grazing rays were drawn, and most of them cross the needle away from rounding.
+    EXPECT_GT(grazing, testing::scaledRays(20000) / 10);
+    EXPECT_GT(robust, grazing / 2);
   }
 }
 
@@ -373,7 +451,7 @@ TEST(SegmentHits, HitsExactlyAtTnearAndTfarCount) {
     return t;
   };
   EXPECT_EQ(hitsWithin(0.0f, INFINITY), (std::vector<double>{2.5}));
-  EXPECT_EQ(hitsWithin(0.0f, 2.5f), (std::vector<double>{2.5}));  // tfar on the surface: inclusive
+  EXPECT_EQ(hitsWithin(0.0f, 2.5f), (std::vector<double>{2.5}));      // tfar on the surface: inclusive
   EXPECT_EQ(hitsWithin(2.5f, INFINITY), (std::vector<double>{2.5}));  // tnear on the surface: inclusive
   EXPECT_EQ(hitsWithin(2.5f, 2.5f), (std::vector<double>{2.5}));
   EXPECT_TRUE(hitsWithin(0.0f, std::nextafter(2.5f, 0.0f)).empty());
@@ -382,10 +460,9 @@ TEST(SegmentHits, HitsExactlyAtTnearAndTfarCount) {
   // The same in a horizontal plane (the in-plane path): the cylinder r = 1 met at t = 2 and 4.
   const Point2 c0{1.0, -1.0}, c1{1.0, 1.0};
   const detail::ShapeFrame cylinder = frameHolding(c0, c1);
-  for (const auto& [tnear, tfar, expected] : {std::tuple{0.0f, 4.0f, std::vector<double>{2.0, 4.0}},
-                                              std::tuple{2.0f, 3.0f, std::vector<double>{2.0}},
-                                              std::tuple{3.0f, 4.0f, std::vector<double>{4.0}},
-                                              std::tuple{2.5f, 3.5f, std::vector<double>{}}}) {
+  for (const auto& [tnear, tfar, expected] :
+       {std::tuple{0.0f, 4.0f, std::vector<double>{2.0, 4.0}}, std::tuple{2.0f, 3.0f, std::vector<double>{2.0}},
+        std::tuple{3.0f, 4.0f, std::vector<double>{4.0}}, std::tuple{2.5f, 3.5f, std::vector<double>{}}}) {
     const MeridianRay m = meridian(cylinder, {{-3.0f, 0.0f, 0.25f}, {1.0f, 0.0f, 0.0f}, tnear, tfar});
     ASSERT_TRUE(m.inPlane);
     const detail::SegmentHits hits = detail::segmentHits(m, c0, c1, m.lo, m.hi);
@@ -398,7 +475,8 @@ TEST(SegmentHits, HitsExactlyAtTnearAndTfarCount) {
 TEST(SegmentHits, RaysInAHorizontalPlaneSeeTheHeightsASegmentOwnsHalfOpen) {
   // A segment owns [zmin, zmax): at its lower vertex's height a horizontal ray meets that vertex's
   // circle (twice, through it), at its upper vertex's height nothing, whichever way it runs.
-  for (const auto& [p0, p1] : {std::pair{Point2{1.0, -1.0}, Point2{2.0, 1.0}}, std::pair{Point2{2.0, 1.0}, Point2{1.0, -1.0}}}) {
+  for (const auto& [p0, p1] :
+       {std::pair{Point2{1.0, -1.0}, Point2{2.0, 1.0}}, std::pair{Point2{2.0, 1.0}, Point2{1.0, -1.0}}}) {
     const detail::ShapeFrame frame = frameHolding(p0, p1);
     const auto hitsAt = [&](float z) {
       const MeridianRay m = meridian(frame, {{-4.0f, 0.0f, z}, {1.0f, 0.0f, 0.0f}});
@@ -418,7 +496,8 @@ TEST(SegmentHits, AnnulusIsHitBetweenItsCirclesHalfOpen) {
   // A ray down the axis and rays straight down at exact radii: the disc holds its centre, the
   // annulus [0.5, 1) its inner circle but not its outer one, in either orientation.
   const Point2 disc0{0.0, 0.5}, disc1{1.0, 0.5};
-  for (const auto& [p0, p1] : {std::pair{Point2{0.5, 0.5}, Point2{1.0, 0.5}}, std::pair{Point2{1.0, 0.5}, Point2{0.5, 0.5}}}) {
+  for (const auto& [p0, p1] :
+       {std::pair{Point2{0.5, 0.5}, Point2{1.0, 0.5}}, std::pair{Point2{1.0, 0.5}, Point2{0.5, 0.5}}}) {
     const detail::ShapeFrame frame = frameHolding(p0, p1);
     const auto hitCount = [&](Point2 a, Point2 b, float x) {
       const MeridianRay m = meridian(frame, {{x, 0.0f, 2.0f}, {0.0f, 0.0f, -1.0f}});
@@ -438,40 +517,49 @@ TEST(SegmentHits, AnnulusIsHitBetweenItsCirclesHalfOpen) {
 }
 
 TEST(SegmentHits, EveryRayThroughAnApexTouchesIt) {
-  // Lines through the apex (the origin) exactly: the direction is minus the float origin. Whether
-  // they enter the cone there or pass it outside (where F has a double root at the apex, which
-  // rounding keeps or loses at random), the apex is a hit: a root the brackets find, or the touch
-  // addApexTouch adds. It must lie where |F| <= E around the apex, as any hit must.
-  const NamedSegment cones[] = {{"apex below", {0.0, 0.0}, {1.0, 0.75}},
-                                {"apex above", {1.0, -0.75}, {0.0, 0.0}},
-                                {"apex below, nearly flat", {0.0, 0.0}, {1.0, 1e-3}},
-                                {"apex below, steep", {0.0, 0.0}, {0.01, 1.0}}};
+  // Lines through the apex exactly: origin = apex + D and direction -D, with D on a grid of 2^-20
+  // (|D| < 4), so that both are exact in float. Whether they enter the cone there or pass it
+  // outside (where F has a double root at the apex, which rounding keeps or loses at random), the
+  // apex is a hit: a root the brackets find, or the touch addApexTouch adds, which must lie where
+  // |F| <= E around the apex, as any hit must. The apexes lie off the bounding sphere's centre, so
+  // that the apex plane's crossing rounds (by about u R / |dz|); slopes run from steep down to
+  // 1 in 20,000, where that rounding moves the crossing farther than the touch's tolerance.
+  const NamedSegment cones[] = {{"apex below", {0.0, -0.75}, {1.0, 0.5}},
+                                {"apex above", {1.0, -0.5}, {0.0, 0.75}},
+                                {"apex below, nearly flat", {0.0, 0.25}, {1.0, 0.25 + 1e-3}},
+                                {"apex below, steep", {0.0, -1.0}, {0.125, 1.0}}};
   for (const std::uint64_t seed : testing::testSeeds({0xa9e})) {
     SCOPED_TRACE(testing::seedTrace(seed));
     std::mt19937_64 random(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto onGrid = [](double x) { return float(std::ldexp(std::round(std::ldexp(x, 20)), -20)); };
     for (const NamedSegment& cone : cones) {
       SCOPED_TRACE(cone.name);
-      const detail::ShapeFrame frame = frameHolding(cone.p0, cone.p1);
+      const detail::ShapeFrame frame = frameOf(cone);
       const double R = frame.sphereRadius;
+      const float apexZ = float(cone.p0.r == 0.0 ? cone.p0.z : cone.p1.z);
+      std::size_t touched = 0;
       for (std::size_t i = 0; i < testing::scaledRays(4000); ++i) {
-        // Slopes from steep down to 1 in 10^4, above and below.
         const double psi = 2.0 * std::numbers::pi * unit(random);
-        const double slope = i % 2 == 0 ? 2.0 * unit(random) - 1.0 : std::pow(10.0, -4.0 * unit(random)) * (i % 4 == 1 ? 1 : -1);
-        const Vec3 origin{float(3.0 * R * std::cos(psi)), float(3.0 * R * std::sin(psi)), float(3.0 * R * slope)};
-        if (origin.z == 0.0f) continue;  // in the apex's plane: the in-plane rule, not the touch
-        const Ray ray{origin, {-origin.x, -origin.y, -origin.z}};
+        const double slope =
+            i % 2 == 0 ? 2.0 * unit(random) - 1.0 : std::pow(10.0, -4.3 * unit(random)) * (i % 4 == 1 ? 1 : -1);
+        const Vec3 D{onGrid(2.0 * R * std::cos(psi)), onGrid(2.0 * R * std::sin(psi)), onGrid(2.0 * R * slope)};
+        if (D.z == 0.0f) continue;  // in the apex's plane: the in-plane rule, not the touch
+        const Ray ray{{D.x, D.y, apexZ + D.z}, {-D.x, -D.y, -D.z}};
+        ASSERT_EQ(ray.origin.z - apexZ, D.z) << "the origin must be exact";
         const MeridianRay m = meridian(frame, ray);
         const detail::SegmentHits hits = detail::segmentHits(m, cone.p0, cone.p1, m.lo, m.hi);
         // The component of |F| <= E holding the line's closest approach to the apex.
-        const Real sApex = -(m.ox * Real(m.dx) + m.oy * Real(m.dy) + m.oz * Real(m.dz));
+        const Real sApex = -(m.ox * Real(m.dx) + m.oy * Real(m.dy) + (m.oz - Real(apexZ)) * m.dz);
         int atApex = 0;
         for (const Component& component : analyse(m, cone.p0, cone.p1, R)) {
           if (!component.span.holds(sApex)) continue;
           for (int k = 0; k < hits.count; ++k) atApex += component.span.holds(hits.s[k]);
         }
         ASSERT_GE(atApex, 1) << describe(ray) << ": " << hits.count << " hits, none at the apex";
+        ++touched;
       }
+      EXPECT_GT(touched, testing::scaledRays(4000) * 9 / 10);
     }
   }
 }
