@@ -43,7 +43,8 @@ Part partOf(const Point2* c) { return {{c[0].r, c[1].r, c[2].r, c[3].r}, {c[0].z
 // |c'(t)|, from the derivative's own Bernstein form: 3 sum of the control differences' weights.
 Real speed(const Part& p, Real t) {
   const auto d = [t](const double c[4]) {
-    return 3 * ((1 - t) * (1 - t) * (Real(c[1]) - c[0]) + 2 * t * (1 - t) * (Real(c[2]) - c[1]) + t * t * (Real(c[3]) - c[2]));
+    return 3 * ((1 - t) * (1 - t) * (Real(c[1]) - c[0]) + 2 * t * (1 - t) * (Real(c[2]) - c[1]) +
+                t * t * (Real(c[3]) - c[2]));
   };
   return std::hypot(d(p.r), d(p.z));
 }
@@ -55,7 +56,8 @@ Real simpson(const Part& p, Real a, Real b, Real eps, Real fa, Real fm, Real fb,
   const Real left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
   const Real delta = left + right - whole;
   if (depth >= 40 || std::abs(delta) <= 15 * eps) return left + right + delta / 15;
-  return simpson(p, a, m, eps / 2, fa, flm, fm, left, depth + 1) + simpson(p, m, b, eps / 2, fm, frm, fb, right, depth + 1);
+  return simpson(p, a, m, eps / 2, fa, flm, fm, left, depth + 1) +
+         simpson(p, m, b, eps / 2, fm, frm, fb, right, depth + 1);
 }
 
 Real lengthBetween(const Part& p, Real a, Real b, Real eps) {
@@ -103,10 +105,10 @@ TEST(ArcTable, StraightPiecesAreTheirChordsHoweverTheirControlsAreSpaced) {
   // only rounding separates the table from the closed form: the 2^-39 L budget holds it.
   const Point2 a{0.25, -1.0}, b{1.5, 2.0};
   const double chord = std::hypot(b.r - a.r, b.z - a.z);
-  for (const std::array<double, 4> lambda : {std::array<double, 4>{0.0, 1.0 / 3, 2.0 / 3, 1.0},
-                                             std::array<double, 4>{0.0, 0.05, 0.95, 1.0},
-                                             std::array<double, 4>{0.0, 0.0, 1.0, 1.0},  // speed 0 at both ends
-                                             std::array<double, 4>{0.0, 0.6, 0.6, 1.0}}) {
+  for (const std::array<double, 4> lambda :
+       {std::array<double, 4>{0.0, 1.0 / 3, 2.0 / 3, 1.0}, std::array<double, 4>{0.0, 0.05, 0.95, 1.0},
+        std::array<double, 4>{0.0, 0.0, 1.0, 1.0},  // speed 0 at both ends
+        std::array<double, 4>{0.0, 0.6, 0.6, 1.0}}) {
     Part p;
     for (int i = 0; i < 4; ++i) p.r[i] = a.r + lambda[i] * (b.r - a.r), p.z[i] = a.z + lambda[i] * (b.z - a.z);
     const detail::ArcTable table = detail::arcTableOf(p.r, p.z);
@@ -155,7 +157,9 @@ TEST(ArcTable, HermiteInterpolationReproducesACubic) {
   const auto df = [](double t) { return 1.5 * t * t - 0.5 * t + 1.5; };
   for (const std::uint32_t steps : {1u, 8u, 100u}) {
     std::vector<double> table;
-    for (std::uint32_t k = 0; k <= steps; ++k) table.push_back(f(double(k) / steps)), table.push_back(df(double(k) / steps));
+    for (std::uint32_t k = 0; k <= steps; ++k) {
+      table.push_back(f(double(k) / steps)), table.push_back(df(double(k) / steps));
+    }
     for (int i = 0; i <= 1000; ++i) {
       const double t = i / 1000.0;
       EXPECT_NEAR(detail::hermiteAt(table.data(), steps, t), f(t), 32 * u * 2) << steps << " steps, u = " << t;

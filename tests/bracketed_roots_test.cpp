@@ -158,8 +158,8 @@ TEST(BracketedRoots, RandomQuadraticsWithKnownRoots) {
       }
       // A double root inside is a touch, reported twice; one outside is nothing.
       const std::vector<double> got = solve(g, x0, x1);
-      ASSERT_EQ(got, expected) << "trial " << trial << ": A=" << A << " roots " << a << ", " << b << " on [" << x0 << ", "
-                               << x1 << "]" << (linear ? " (linear)" : "");
+      ASSERT_EQ(got, expected) << "trial " << trial << ": A=" << A << " roots " << a << ", " << b << " on [" << x0
+                               << ", " << x1 << "]" << (linear ? " (linear)" : "");
       const Roots first = bracketedRoots<true>(g, x0, x1, insideAt(g, x0), insideAt(g, x1));
       ASSERT_EQ(first.count, std::min<int>(1, int(expected.size()))) << "trial " << trial;
       if (first.count == 1) {

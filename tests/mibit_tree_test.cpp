@@ -96,15 +96,24 @@ std::vector<TreeInput> treeInputs(std::uint64_t seed) {
 class TreeCheck {
  public:
   TreeCheck(const MibitTree& tree, const TreeInput& input, const BuildOptions& options)
-      : tree_(tree), points_(input.points), inner_(input.innerControls), options_(options),
-        segmentSeen_(points_.size() - 1, 0), nodeSeen_(tree.nodes.size(), 0), intervalSeen_(tree.intervals.size(), 0) {}
+      : tree_(tree),
+        points_(input.points),
+        inner_(input.innerControls),
+        options_(options),
+        segmentSeen_(points_.size() - 1, 0),
+        nodeSeen_(tree.nodes.size(), 0),
+        intervalSeen_(tree.intervals.size(), 0) {}
 
   void run() {
     ASSERT_FALSE(tree_.nodes.empty());
     explicitNode(0, 1);
-    for (std::size_t k = 0; k < segmentSeen_.size(); ++k) ASSERT_EQ(segmentSeen_[k], 1) << "segment " << k << " reached";
+    for (std::size_t k = 0; k < segmentSeen_.size(); ++k) {
+      ASSERT_EQ(segmentSeen_[k], 1) << "segment " << k << " reached";
+    }
     for (std::size_t i = 0; i < nodeSeen_.size(); ++i) ASSERT_EQ(nodeSeen_[i], 1) << "node " << i << " reached";
-    for (std::size_t i = 0; i < intervalSeen_.size(); ++i) ASSERT_EQ(intervalSeen_[i], 1) << "interval " << i << " reached";
+    for (std::size_t i = 0; i < intervalSeen_.size(); ++i) {
+      ASSERT_EQ(intervalSeen_[i], 1) << "interval " << i << " reached";
+    }
     EXPECT_EQ(tree_.depth, longest_) << "the stored depth is the longest root-to-leaf path";
     EXPECT_LE(tree_.depth, depthBound());
     EXPECT_LT(tree_.depth, 64u) << "the searches' stacks hold 64 entries";
@@ -117,7 +126,8 @@ class TreeCheck {
   std::uint32_t depthBound() const {
     if (!options_.monotoneSplit) {
       const std::uint64_t segments = points_.size() - 1;
-      return 1 + ceilLog2(options_.subdivisions == 0 ? segments : std::min<std::uint64_t>(options_.subdivisions, segments));
+      return 1 +
+             ceilLog2(options_.subdivisions == 0 ? segments : std::min<std::uint64_t>(options_.subdivisions, segments));
     }
     std::uint32_t leaves = 1;
     for (const MonotoneInterval& interval : tree_.intervals) leaves = std::max(leaves, interval.leaves);
@@ -142,7 +152,9 @@ class TreeCheck {
       case MibitNode::Kind::segments:
         EXPECT_FALSE(options_.monotoneSplit);
         EXPECT_GE(node.count, 1u);
-        for (std::uint32_t k = node.first; k < node.first + node.count && k < segmentSeen_.size(); ++k) ++segmentSeen_[k];
+        for (std::uint32_t k = node.first; k < node.first + node.count && k < segmentSeen_.size(); ++k) {
+          ++segmentSeen_[k];
+        }
         run = {node.first, node.first + node.count};
         longest_ = std::max(longest_, depth);
         break;
@@ -168,8 +180,8 @@ class TreeCheck {
   }
 
   // An interval's implicit MR node: leaves [leafBegin, leafEnd), heap number `heap`.
-  void implicitNode(const MonotoneInterval& interval, std::uint64_t heap, std::uint64_t leafBegin, std::uint64_t leafEnd,
-                    std::uint32_t depth) {
+  void implicitNode(const MonotoneInterval& interval, std::uint64_t heap, std::uint64_t leafBegin,
+                    std::uint64_t leafEnd, std::uint32_t depth) {
     const std::uint32_t a = MibitTree::leafVertex(interval, leafBegin), b = MibitTree::leafVertex(interval, leafEnd);
     ASSERT_LT(a, b) << "an empty MR node";
     ASSERT_TRUE(interval.firstSegment <= a && b <= interval.firstSegment + interval.segmentCount);
@@ -204,8 +216,8 @@ class TreeCheck {
   }
 
   void checkExplicitShell(std::uint32_t index, const MibitNode& node, std::uint32_t first, std::uint32_t last) {
-    const std::string what = "node " + std::to_string(index) + " (segments " + std::to_string(first) + " to " +
-                             std::to_string(last) + ")";
+    const std::string what =
+        "node " + std::to_string(index) + " (segments " + std::to_string(first) + " to " + std::to_string(last) + ")";
     double zLow = INFINITY, zHigh = -INFINITY, rMin = INFINITY, rMax = -INFINITY;
     for (std::uint32_t k = first; k <= last; ++k) {
       zLow = std::min(zLow, points_[k].z), zHigh = std::max(zHigh, points_[k].z);
@@ -213,7 +225,9 @@ class TreeCheck {
     }
     // Holds the run's vertices (a segment, and a monotone part, lies in the box of its ends), and is
     // no looser than the next float outwards.
-    const auto tight = [](float bound, double value) { return std::abs(double(bound) - value) <= std::ldexp(std::abs(value), -23); };
+    const auto tight = [](float bound, double value) {
+      return std::abs(double(bound) - value) <= std::ldexp(std::abs(value), -23);
+    };
     EXPECT_TRUE(node.zLow <= zLow && zHigh <= node.zHigh && node.rMin <= rMin && rMax <= node.rMax) << what;
     EXPECT_TRUE(tight(node.zLow, zLow) && tight(node.zHigh, zHigh) && tight(node.rMin, rMin) && tight(node.rMax, rMax))
         << what << ": [" << node.zLow << ", " << node.zHigh << "] x [" << node.rMin << ", " << node.rMax << "] around ["
@@ -246,9 +260,13 @@ class TreeCheck {
       const long double slack = 3 * u * (std::abs(band.nr * p.r) + std::abs(band.nz * p.z));
       return band.wLow - slack <= w && w <= band.wHigh + slack;
     };
-    for (std::uint32_t k = first; k <= last; ++k) ASSERT_TRUE(holds(points_[k])) << what << ": vertex " << k << " outside its band";
+    for (std::uint32_t k = first; k <= last; ++k) {
+      ASSERT_TRUE(holds(points_[k])) << what << ": vertex " << k << " outside its band";
+    }
     if (!inner_.empty()) {
-      for (std::uint32_t k = 2 * first; k < 2 * last; ++k) ASSERT_TRUE(holds(inner_[k])) << what << ": control " << k << " outside";
+      for (std::uint32_t k = 2 * first; k < 2 * last; ++k) {
+        ASSERT_TRUE(holds(inner_[k])) << what << ": control " << k << " outside";
+      }
     }
   }
 
@@ -259,7 +277,8 @@ class TreeCheck {
       const MonotoneInterval& interval = tree_.intervals[i];
       ASSERT_EQ(interval.firstSegment, next) << "interval " << i;
       ASSERT_GE(interval.segmentCount, 1u) << "interval " << i;
-      EXPECT_TRUE(monotone(points_, interval.firstSegment, interval.segmentCount)) << "interval " << i << " is not monotone";
+      EXPECT_TRUE(monotone(points_, interval.firstSegment, interval.segmentCount))
+          << "interval " << i << " is not monotone";
       next = interval.firstSegment + interval.segmentCount;
       if (next < points_.size() - 1) {
         EXPECT_FALSE(monotone(points_, interval.firstSegment, interval.segmentCount + 1))
@@ -285,8 +304,8 @@ TEST(MibitTree, EverySegmentReachedOnceEveryShellHoldsItsSegmentsDepthWithinItsB
         for (const bool monotoneSplit : {true, false}) {
           for (const std::uint32_t subdivisions : {0u, 3u}) {
             const BuildOptions options{.shell = shell, .subdivisions = subdivisions, .monotoneSplit = monotoneSplit};
-            SCOPED_TRACE(input.name + ", shell " + std::to_string(int(shell)) + ", split " + std::to_string(monotoneSplit) +
-                         ", subdivisions " + std::to_string(subdivisions));
+            SCOPED_TRACE(input.name + ", shell " + std::to_string(int(shell)) + ", split " +
+                         std::to_string(monotoneSplit) + ", subdivisions " + std::to_string(subdivisions));
             const MibitTree tree = detail::buildMibitTree(input.points, options, input.innerControls);
             TreeCheck(tree, input, options).run();
             ++trees;

@@ -35,7 +35,6 @@ namespace {
 using Real = long double;
 using detail::MonotonePart;
 
-
 // de Casteljau's scheme on four control values.
 Real casteljau(Real c0, Real c1, Real c2, Real c3, Real t) {
   const Real a = c0 + t * (c1 - c0), b = c1 + t * (c2 - c1), d = c2 + t * (c3 - c2);
@@ -112,15 +111,24 @@ void checkParts(std::span<const Point2> bezier, const std::string& what, std::si
     // Monotone: along 64 samples each coordinate moves one way (the way from start to end) up to
     // the overshoot and the rounding, and the curve stays in the box of the part's ends.
     const RealPoint start = at(part.c, 0), end = at(part.c, 1);
-    const int dirR = end.r > start.r ? 1 : end.r < start.r ? -1 : 0, dirZ = end.z > start.z ? 1 : end.z < start.z ? -1 : 0;
+    const int dirR = end.r > start.r   ? 1
+                     : end.r < start.r ? -1
+                                       : 0,
+              dirZ = end.z > start.z   ? 1
+                     : end.z < start.z ? -1
+                                       : 0;
     const Real monotoneSlack = overshoot + rounding;
     RealPoint previous = start;
     for (int j = 0; j <= 64; ++j) {
       const Real v = Real(j) / 64;
       const RealPoint p = at(part.c, v);
-      const auto backwards = [&](Real now, Real before, int dir) { return dir == 0 ? std::abs(now - before) : dir * (before - now); };
-      ASSERT_LE(backwards(p.r, previous.r, dirR), monotoneSlack) << "part " << k << ": r turns back at v = " << double(v);
-      ASSERT_LE(backwards(p.z, previous.z, dirZ), monotoneSlack) << "part " << k << ": z turns back at v = " << double(v);
+      const auto backwards = [&](Real now, Real before, int dir) {
+        return dir == 0 ? std::abs(now - before) : dir * (before - now);
+      };
+      ASSERT_LE(backwards(p.r, previous.r, dirR), monotoneSlack)
+          << "part " << k << ": r turns back at v = " << double(v);
+      ASSERT_LE(backwards(p.z, previous.z, dirZ), monotoneSlack)
+          << "part " << k << ": z turns back at v = " << double(v);
       ASSERT_TRUE(std::min(start.r, end.r) - monotoneSlack <= p.r && p.r <= std::max(start.r, end.r) + monotoneSlack &&
                   std::min(start.z, end.z) - monotoneSlack <= p.z && p.z <= std::max(start.z, end.z) + monotoneSlack)
           << "part " << k << " leaves the box of its ends at v = " << double(v);
@@ -152,7 +160,9 @@ TEST(MonotoneParts, RandomCurvesAtEveryScale) {
       const int pieces = 1 + curve % 4;
       const double scale = std::ldexp(1.0, std::uniform_int_distribution<int>(-20, 20)(random));
       std::vector<Point2> bezier;
-      for (int i = 0; i < 3 * pieces + 1; ++i) bezier.push_back({scale * coordinate(random), scale * coordinate(random)});
+      for (int i = 0; i < 3 * pieces + 1; ++i) {
+        bezier.push_back({scale * coordinate(random), scale * coordinate(random)});
+      }
       std::size_t parts = 0;
       checkParts(bezier, "curve " + std::to_string(curve), &parts);
       if (::testing::Test::HasFatalFailure()) return;

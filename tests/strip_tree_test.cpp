@@ -71,18 +71,22 @@ class StripCheck {
   // double (far below u): 3 u bounds both.
   void checkStrip(std::size_t i, const StripNode& n, const Run& run) {
     double zLow = INFINITY, zHigh = -INFINITY;
-    for (std::size_t k = run.first; k <= run.last; ++k) zLow = std::min(zLow, points_[k].z), zHigh = std::max(zHigh, points_[k].z);
+    for (std::size_t k = run.first; k <= run.last; ++k) {
+      zLow = std::min(zLow, points_[k].z), zHigh = std::max(zHigh, points_[k].z);
+    }
     EXPECT_EQ(n.zLow, zLow) << "node " << i;
     EXPECT_EQ(n.zHigh, zHigh) << "node " << i;
     for (const detail::Band* band : {&n.across, &n.along}) {
       EXPECT_GE(band->nr, 0.0) << "node " << i << ": nr < 0 breaks the band test's convexity";
       // The chord's unit vector rounds in hypot and the divisions, its squares in two more: 8 u.
-      EXPECT_LE(std::abs(band->nr * band->nr + band->nz * band->nz - 1.0), 8 * u) << "node " << i << ": not a unit normal";
+      EXPECT_LE(std::abs(band->nr * band->nr + band->nz * band->nz - 1.0), 8 * u)
+          << "node " << i << ": not a unit normal";
       for (std::size_t k = run.first; k <= run.last; ++k) {
         const long double w = (long double)band->nr * points_[k].r + (long double)band->nz * points_[k].z;
         const long double slack = 3 * u * (std::abs(band->nr * points_[k].r) + std::abs(band->nz * points_[k].z));
         ASSERT_TRUE(band->wLow - slack <= w && w <= band->wHigh + slack)
-            << "node " << i << ": vertex " << k << " outside its strip (" << (band == &n.across ? "across" : "along") << ")";
+            << "node " << i << ": vertex " << k << " outside its strip (" << (band == &n.across ? "across" : "along")
+            << ")";
       }
     }
     // A strip is a rectangle: its two bands are perpendicular.
@@ -113,7 +117,8 @@ class StripCheck {
     };
     long double farthest = 0;
     for (std::size_t k = run.first + 1; k < run.last; ++k) farthest = std::max(farthest, distance(k));
-    EXPECT_GE(distance(split), farthest - 16 * u * size) << "node " << i << ": split at " << split << ", not the farthest vertex";
+    EXPECT_GE(distance(split), farthest - 16 * u * size)
+        << "node " << i << ": split at " << split << ", not the farthest vertex";
   }
 
   const StripTree& tree_;

@@ -60,9 +60,12 @@ Built build(std::span<const Point2> points) {
 // The exact extent of segments [first, last) (their vertices first to last).
 struct Extent {
   double zLow = INFINITY, zHigh = -INFINITY, rMin = INFINITY, rMax = -INFINITY;
-  void add(Point2 p) { zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z), rMin = std::min(rMin, p.r), rMax = std::max(rMax, p.r); }
+  void add(Point2 p) {
+    zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z), rMin = std::min(rMin, p.r), rMax = std::max(rMax, p.r);
+  }
   void add(const Extent& e) {
-    zLow = std::min(zLow, e.zLow), zHigh = std::max(zHigh, e.zHigh), rMin = std::min(rMin, e.rMin), rMax = std::max(rMax, e.rMax);
+    zLow = std::min(zLow, e.zLow), zHigh = std::max(zHigh, e.zHigh), rMin = std::min(rMin, e.rMin),
+    rMax = std::max(rMax, e.rMax);
   }
 };
 
@@ -76,11 +79,11 @@ struct Extent {
   const auto step = [](long double x) { return std::ldexp(std::abs(x), -23); };  // two float ulps
   if (!(zLow <= e.zLow && e.zHigh <= zHigh)) return ::testing::AssertionFailure() << "slab misses a vertex";
   if (!(low2 <= lowExact + lowSlack && highExact - highSlack <= high2)) {
-    return ::testing::AssertionFailure() << "[" << low2 << ", " << high2 << "] misses r^2 in [" << double(lowExact) << ", "
-                                         << double(highExact) << "] with the margin";
+    return ::testing::AssertionFailure() << "[" << low2 << ", " << high2 << "] misses r^2 in [" << double(lowExact)
+                                         << ", " << double(highExact) << "] with the margin";
   }
-  if (!(e.zLow - zLow <= step(e.zLow) && zHigh - e.zHigh <= step(e.zHigh) && lowExact - low2 <= step(lowExact) + lowSlack &&
-        high2 - highExact <= step(highExact) + highSlack)) {
+  if (!(e.zLow - zLow <= step(e.zLow) && zHigh - e.zHigh <= step(e.zHigh) &&
+        lowExact - low2 <= step(lowExact) + lowSlack && high2 - highExact <= step(highExact) + highSlack)) {
     return ::testing::AssertionFailure() << "looser than a float step";
   }
   return ::testing::AssertionSuccess();
@@ -101,8 +104,13 @@ bool monotone(std::span<const Point2> points, std::size_t first, std::size_t cou
 class WideCheck {
  public:
   explicit WideCheck(const Built& b)
-      : b_(b), tree_(b.tree), points_(b.local), margin_(b.frame.rho2Margin + WideTree::kFloatSlack * b.frame.sphereRadius * b.frame.sphereRadius),
-        segmentSeen_(points_.size() - 1, 0), leafSeen_(tree_.leaves.size(), 0), nodeSeen_(tree_.nodes.size(), 0),
+      : b_(b),
+        tree_(b.tree),
+        points_(b.local),
+        margin_(b.frame.rho2Margin + WideTree::kFloatSlack * b.frame.sphereRadius * b.frame.sphereRadius),
+        segmentSeen_(points_.size() - 1, 0),
+        leafSeen_(tree_.leaves.size(), 0),
+        nodeSeen_(tree_.nodes.size(), 0),
         recordOwner_(tree_.childRef.size() >= WideTree::kPadding ? tree_.childRef.size() - WideTree::kPadding : 0, 0) {}
 
   void run() {
@@ -112,7 +120,9 @@ class WideCheck {
     for (std::size_t k = 0; k < segments; ++k) ASSERT_EQ(segmentSeen_[k], 1) << "segment " << k << " in leaves";
     for (std::size_t i = 0; i < leafSeen_.size(); ++i) ASSERT_EQ(leafSeen_[i], 1) << "leaf " << i << " reached";
     for (std::size_t i = 0; i < nodeSeen_.size(); ++i) ASSERT_EQ(nodeSeen_[i], 1) << "node " << i << " reached";
-    for (std::size_t i = 0; i < recordOwner_.size(); ++i) ASSERT_EQ(recordOwner_[i], 1) << "child record " << i << " owned";
+    for (std::size_t i = 0; i < recordOwner_.size(); ++i) {
+      ASSERT_EQ(recordOwner_[i], 1) << "child record " << i << " owned";
+    }
     checkDepth();
     checkPadding();
     checkSegmentRecords();
@@ -130,7 +140,8 @@ class WideCheck {
       EXPECT_EQ(depth, tree_.depth) << "leaf " << index << " not at the tree's depth";
       const WideLeaf& leaf = tree_.leaves[index];
       checkLeaf(index, leaf);
-      for (std::uint32_t k = leaf.firstSegment; k < leaf.firstSegment + leaf.segmentCount && k < segmentSeen_.size(); ++k) {
+      for (std::uint32_t k = leaf.firstSegment; k < leaf.firstSegment + leaf.segmentCount && k < segmentSeen_.size();
+           ++k) {
         ++segmentSeen_[k];
         extent.add(points_[k]);
         extent.add(points_[k + 1]);
@@ -143,11 +154,13 @@ class WideCheck {
     const WideNode& node = tree_.nodes[ref];
     EXPECT_GE(node.childCount, 1u);
     EXPECT_LE(node.childCount, WideNode::kMaxChildren);
-    EXPECT_LE(node.firstChild + node.childCount, recordOwner_.size()) << "node " << ref << "'s records run into the padding";
+    EXPECT_LE(node.firstChild + node.childCount, recordOwner_.size())
+        << "node " << ref << "'s records run into the padding";
     for (std::uint32_t c = node.firstChild; c < node.firstChild + node.childCount && c < recordOwner_.size(); ++c) {
       ++recordOwner_[c];
       const Extent child = subtree(tree_.childRef[c], depth + 1);
-      EXPECT_TRUE(holds(tree_.childZLow[c], tree_.childZHigh[c], tree_.childLow2[c], tree_.childHigh2[c], child, margin_))
+      EXPECT_TRUE(
+          holds(tree_.childZLow[c], tree_.childZHigh[c], tree_.childLow2[c], tree_.childHigh2[c], child, margin_))
           << "node " << ref << ", child record " << c;
       extent.add(child);
     }
@@ -155,8 +168,8 @@ class WideCheck {
   }
 
   void checkLeaf(std::uint32_t index, const WideLeaf& leaf) {
-    const std::string what = "leaf " + std::to_string(index) + " (segments " + std::to_string(leaf.firstSegment) + " + " +
-                             std::to_string(leaf.segmentCount) + ")";
+    const std::string what = "leaf " + std::to_string(index) + " (segments " + std::to_string(leaf.firstSegment) +
+                             " + " + std::to_string(leaf.segmentCount) + ")";
     EXPECT_GE(leaf.segmentCount, 1u) << what;
     EXPECT_LE(leaf.segmentCount, WideTree::kLeafSegments) << what;
     // Within one monotone interval (itself monotone: mibit_tree_test.cpp checks them)...
@@ -219,7 +232,8 @@ class WideCheck {
       Extent e;
       e.add(points_[k]);
       e.add(points_[k + 1]);
-      ASSERT_TRUE(holds(tree_.segmentZLow[k], tree_.segmentZHigh[k], tree_.segmentLow2[k], tree_.segmentHigh2[k], e, margin_))
+      ASSERT_TRUE(
+          holds(tree_.segmentZLow[k], tree_.segmentZHigh[k], tree_.segmentLow2[k], tree_.segmentHigh2[k], e, margin_))
           << "segment " << k << "'s own record";
     }
   }
