@@ -475,8 +475,10 @@ TEST(SegmentHits, HitsExactlyAtTnearAndTfarCount) {
 TEST(SegmentHits, RaysInAHorizontalPlaneSeeTheHeightsASegmentOwnsHalfOpen) {
   // A segment owns [zmin, zmax): at its lower vertex's height a horizontal ray meets that vertex's
   // circle (twice, through it), at its upper vertex's height nothing, whichever way it runs.
-  for (const auto& [p0, p1] :
+  // (Named points, not structured bindings: clang 14 cannot capture those in a lambda.)
+  for (const std::pair<Point2, Point2>& segment :
        {std::pair{Point2{1.0, -1.0}, Point2{2.0, 1.0}}, std::pair{Point2{2.0, 1.0}, Point2{1.0, -1.0}}}) {
+    const Point2 p0 = segment.first, p1 = segment.second;
     const detail::ShapeFrame frame = frameHolding(p0, p1);
     const auto hitsAt = [&](float z) {
       const MeridianRay m = meridian(frame, {{-4.0f, 0.0f, z}, {1.0f, 0.0f, 0.0f}});
