@@ -238,8 +238,8 @@ struct BuildOptions {
   std::uint32_t subdivisions = 0;
   bool monotoneSplit = true;  // false: refine the whole profile as one interval (paper's "no split")
   bool rangeSearch = true;    // false: intersect every node's shell (paper's "no range search")
-  // Lay the tree out for SIMD: leaves of up to 64 segments of a monotone interval whose segment
-  // shells are tested several at once, under nodes of eight children (README, How it works). Used
+  // Lay the tree out for SIMD: leaves of up to 32 segments of a monotone interval whose segment
+  // shells are tested several at once, under nodes of up to 64 children (docs/design.md). Used
   // with the defaults above (cylinder shells, monotone split, range search, subdivisions 0); false,
   // or any other option, keeps the paper's binary tree. Both give the same hits bit for bit.
   bool wideNodes = true;

@@ -115,7 +115,7 @@ class Builder {
       level = std::move(next);
     }
     linearise(level.front());
-    // Cannot happen within Profile::kMaxPoints (depth <= log2(intervals) + log2(leaves) + 2 <= 34):
+    // Cannot happen within Profile::kMaxPoints (depth <= ceil(log2(intervals)) + 1 + ceil(log2(leaves)) <= 34):
     // guards the 64-entry search stacks should that limit ever change.
     if (tree_.depth >= 64) throw std::logic_error("MIBIT depth exceeds the search stacks' 64 entries");
     return std::move(tree_);
