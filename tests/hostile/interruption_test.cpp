@@ -156,15 +156,17 @@ TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   EXPECT_EQ(run.out, "scan.pcd\nan existing scan") << "only the old scan, as it was";
 }
 
-// The scan is streamed: 40 poses take no more memory than 4 (the whole table of 36 more poses
-// would be 36 x 28,800 beams x 20 bytes = 20 MB), and the binary PCD holds every point in PCL's
-// 22-byte layout.
+// The scan is streamed: 80 poses take no more memory than 40 (the whole table of 40 more poses
+// would be 40 x 28,800 beams x 20 bytes = 22 MB), and the binary PCD holds every point in PCL's
+// 22-byte layout. Not from fewer poses: under AddressSanitizer the allocator itself warms up over
+// the first dozens of poses (clang 19, measured: 4 poses 29.9 MB, 40 poses 35.3 MB, 400 poses
+// 36.8 MB; the Release build 13.5 MB at all three), which is not the scan growing.
 TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
   const ScratchDirectory dir;
   dir.write("scene.json", kPoleScene);
   dir.write("sensor.json", kSpinningSensor);
   long peak[2] = {0, 0};
-  const int poses[2] = {4, 40};
+  const int poses[2] = {40, 80};
   // Under AddressSanitizer, freed blocks wait in a quarantine (they would count as growth): off.
   const char* asan = std::getenv("ASAN_OPTIONS");
   const std::string asanOptions = "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
@@ -182,7 +184,7 @@ TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
     ASSERT_NE(data, std::string::npos);
     EXPECT_EQ(cloud.size() - (data + 12), std::size_t(poses[i]) * 28800 * 22);
   }
-  const long tableKb = 36L * 28800 * 20 / 1024;
+  const long tableKb = 40L * 28800 * 20 / 1024;
   EXPECT_LT(peak[1] - peak[0], tableKb / 4) << "peaks " << peak[0] << " KB and " << peak[1] << " KB";
   EXPECT_GT(peak[0], 1000) << "a peak was measured";
 }
