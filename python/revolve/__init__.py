@@ -7,11 +7,15 @@ intersection at its leaves, splines solved as curves) instead of tessellating it
 RaycastingScene     Open3D's RaycastingScene (0.19) with exact surfaces of revolution beside meshes
 Scene, Lidar        a scene file and revolve-lidar's range-finder, bit for bit the tool's scans
 ScanFile            a scan written as revolve-lidar writes it (PCD or CSV), shard by shard
+scan_shard          one shard of a scan traced from files, loaded once per process
 cylinder_clearance  revolve-clearance's robot clearance
 read_poses          a POSES.csv file as the tools read it
+tessellate          a profile swept into a triangle mesh (for triangle ray casters)
 """
 
+from ._mesh import tessellate
 from ._pinhole import create_rays_pinhole as _create_rays_pinhole
+from ._shards import scan_shard
 from ._revolve import (
     Lidar,
     ProfileError,
@@ -34,4 +38,6 @@ __all__ = [
     "cylinder_clearance",
     "embree_version",
     "read_poses",
+    "scan_shard",
+    "tessellate",
 ]
