@@ -20,9 +20,13 @@ namespace revolve::python {
 struct RaycastingScene::Revolution {
   Shape shape;
   Placement placement;
-  app::Scene prototype;  // the shape alone, instanced under the geometry's id
+  // The shape alone, instanced under the geometry's id; none when it stays where it is (the
+  // identity), attached to the top scene itself: an instance costs each ray a second traversal
+  // and two transforms.
+  app::Scene prototype;
   std::optional<Geometry> geometry;
-  // The same shape with a filter counting every crossing (count_intersections), built on first use.
+  // The same shape with a filter counting every crossing (count_intersections), built on first use,
+  // attached the same way.
   app::Scene countingPrototype;
   std::optional<Geometry> countingGeometry;
 };
@@ -163,16 +167,40 @@ void offerRevolution(PointQuery& q, const RaycastingScene::Revolution& g, unsign
 bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
   auto& q = *static_cast<PointQuery*>(args->userPtr);
   const double before = q.best.distance;
-  if (args->context->instStackSize > 0) {
-    const unsigned id = args->context->instID[0];
-    offerRevolution(q, *(*q.revolutions)[id], id);
+  const unsigned id = args->context->instStackSize > 0 ? args->context->instID[0] : args->geomID;
+  if (const RaycastingScene::Revolution* revolution = (*q.revolutions)[id].get()) {
+    offerRevolution(q, *revolution, id);
   } else {
-    offerTriangle(q, *(*q.meshes)[args->geomID], args->geomID, args->primID);
+    offerTriangle(q, *(*q.meshes)[id], id, args->primID);
   }
   if (!(q.best.distance < before)) return false;
   // The radius shrinks to the best distance, rounded up so that it never excludes the best.
   args->query->radius = std::nextafter(float(q.best.distance), kInfinity);
   return true;
+}
+
+bool isIdentity(const Placement& p) {
+  const Matrix3d identity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  return p.linear == identity && p.translate == Vec3d{0, 0, 0};
+}
+
+// Attaches `geometry` to `scene` under `id`: itself, or through an instance of `prototype` (made
+// here) under a placement other than the identity.
+void attach(RTCDevice device, RTCScene scene, const Geometry& geometry, app::Scene& prototype, const Placement& placement, unsigned id) {
+  if (isIdentity(placement)) {
+    rtcAttachGeometryByID(scene, geometry.handle(), id);
+    return;
+  }
+  prototype = app::newScene(device);
+  rtcAttachGeometry(prototype.get(), geometry.handle());
+  rtcCommitScene(prototype.get());
+  RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, prototype.get());
+  const std::array<float, 12> columns = placement.embreeColumns();
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
+  rtcCommitGeometry(instance);
+  rtcAttachGeometryByID(scene, instance, id);
+  rtcReleaseGeometry(instance);
 }
 
 void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
@@ -204,17 +232,9 @@ std::uint32_t RaycastingScene::addRevolution(Shape shape, const Placement& place
   std::unique_lock lock(mutex_);
   if (revolutions_.size() >= kInvalidId) throw std::length_error("a scene holds at most 2^32 - 1 geometries");
   const auto id = std::uint32_t(revolutions_.size());
-  auto g = std::make_unique<Revolution>(Revolution{std::move(shape), placement, app::newScene(device_.get()), std::nullopt, nullptr, std::nullopt});
+  auto g = std::make_unique<Revolution>(Revolution{std::move(shape), placement, nullptr, std::nullopt, nullptr, std::nullopt});
   g->geometry.emplace(device_.get(), g->shape);
-  rtcAttachGeometry(g->prototype.get(), g->geometry->handle());
-  rtcCommitScene(g->prototype.get());
-  RTCGeometry instance = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-  rtcSetGeometryInstancedScene(instance, g->prototype.get());
-  const std::array<float, 12> columns = placement.embreeColumns();
-  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
-  rtcCommitGeometry(instance);
-  rtcAttachGeometryByID(top_.get(), instance, id);
-  rtcReleaseGeometry(instance);
+  attach(device_.get(), top_.get(), *g->geometry, g->prototype, g->placement, id);
   revolutions_.push_back(std::move(g));
   meshes_.push_back(nullptr);
   committed_ = false;
@@ -273,20 +293,12 @@ void RaycastingScene::buildCountingScene() {
   for (std::size_t id = 0; id < revolutions_.size(); ++id) {
     if (Revolution* g = revolutions_[id].get()) {
       if (!g->countingGeometry) {
-        g->countingPrototype = app::newScene(device_.get());
         g->countingGeometry.emplace(device_.get(), g->shape);
         g->countingGeometry->setIntersectFilter(countCrossing);
         rtcCommitGeometry(g->countingGeometry->handle());
-        rtcAttachGeometry(g->countingPrototype.get(), g->countingGeometry->handle());
-        rtcCommitScene(g->countingPrototype.get());
       }
-      RTCGeometry instance = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(instance, g->countingPrototype.get());
-      const std::array<float, 12> columns = g->placement.embreeColumns();
-      rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
-      rtcCommitGeometry(instance);
-      rtcAttachGeometryByID(counting.get(), instance, unsigned(id));
-      rtcReleaseGeometry(instance);
+      g->countingPrototype.reset();
+      attach(device_.get(), counting.get(), *g->countingGeometry, g->countingPrototype, g->placement, unsigned(id));
     } else {
       const Mesh& mesh = *meshes_[id];
       RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -349,14 +361,17 @@ std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::siz
     out.primitive[i] = rh.hit.primID;
     uv[0] = rh.hit.u;
     uv[1] = rh.hit.v;
-    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
-      // A revolution: its unit object-space normal carried to the world.
-      out.geometry[i] = rh.hit.instID[0];
-      const Vec3d n = revolutions_[rh.hit.instID[0]]->placement.normalToWorld({rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+    const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+    const unsigned id = instanced ? rh.hit.instID[0] : rh.hit.geomID;
+    out.geometry[i] = id;
+    if (instanced) {
+      // A placed revolution: its unit object-space normal carried to the world.
+      const Vec3d n = revolutions_[id]->placement.normalToWorld({rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
       normal[0] = float(n[0]), normal[1] = float(n[1]), normal[2] = float(n[2]);
+    } else if (revolutions_[id]) {
+      normal[0] = rh.hit.Ng_x, normal[1] = rh.hit.Ng_y, normal[2] = rh.hit.Ng_z;  // unit already, in the world
     } else {
       // A triangle: Embree's normal made unit length as Open3D does it, in float.
-      out.geometry[i] = rh.hit.geomID;
       const float scale = 1.0f / std::sqrt(rh.hit.Ng_x * rh.hit.Ng_x + rh.hit.Ng_y * rh.hit.Ng_y + rh.hit.Ng_z * rh.hit.Ng_z);
       normal[0] = rh.hit.Ng_x * scale, normal[1] = rh.hit.Ng_y * scale, normal[2] = rh.hit.Ng_z * scale;
     }

@@ -31,7 +31,7 @@ def write_poses(path, poses):
     with open(path, "w") as out:
         out.write("x,y,z,yaw\n")
         for x, y, z, yaw in poses:
-            out.write(f"{x!r},{y!r},{z!r},{yaw!r}\n")
+            out.write(",".join(repr(float(v)) for v in (x, y, z, yaw)) + "\n")  # repr: exact, shortest
     return path
 
 
