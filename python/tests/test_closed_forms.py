@@ -379,3 +379,31 @@ def test_load_places_a_scene_files_objects_and_quads(tmp_path):
     assert np.allclose(got["t_hit"], [6, 6, 10], rtol=1e-6)
     assert got["geometry_ids"].tolist() == [0, 0, 1]
     assert np.allclose(got["primitive_normals"][:2], [[0, 0, 1], [0, -1, 0]], atol=1e-6)
+
+
+def test_tessellate_sweeps_the_profile_into_outward_triangles_within_its_bound():
+    profile = semicircle(1.0, 32)
+    slices = 48
+    vertices, triangles = revolve.tessellate(profile, slices)
+    assert vertices.dtype == np.float32 and triangles.dtype == np.uint32
+    assert vertices.shape == (33 * slices, 3) and triangles.shape == (2 * 32 * slices, 3)
+    # Every vertex on its circle: at its profile point's radius and height.
+    rows = np.repeat(profile, slices, axis=0)
+    assert np.allclose(np.hypot(vertices[:, 0], vertices[:, 1]), rows[:, 0], atol=1e-6)
+    assert np.allclose(vertices[:, 2], rows[:, 1], atol=1e-7)
+    # Outward: each non-degenerate triangle's normal points away from the centre.
+    a, b, c = (vertices[triangles[:, k]].astype(np.float64) for k in range(3))
+    n = np.cross(b - a, c - a)
+    area = np.linalg.norm(n, axis=1)
+    assert np.all(np.einsum("ij,ij->i", n[area > 1e-12], (a + b + c)[area > 1e-12]) > 0)
+    # Traced, its hits lie within its error bound (the polygon's sagitta plus the slices') of the sphere.
+    scene = revolve.RaycastingScene()
+    scene.add_triangles(vertices, triangles)
+    rays, _ = rays_about(profile, 5000, np.random.default_rng(SEED + 6))
+    t = scene.cast_rays(rays)["t_hit"].astype(np.float64)
+    hit = np.isfinite(t)
+    p = rays[hit, :3] + t[hit, None] * rays[hit, 3:]
+    bound = (1 - math.cos(math.pi / 64)) + (1 - math.cos(math.pi / slices))
+    assert hit.sum() > 1000 and np.all(np.abs(np.linalg.norm(p, axis=1) - 1) <= bound + 1e-6)
+    with pytest.raises(ValueError, match=r"slices = 2: must be a whole number, at least 3"):
+        revolve.tessellate(profile, 2)
