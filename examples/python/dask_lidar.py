@@ -87,7 +87,7 @@ def main(argv=None):
         client.close()
         if cluster is not None:
             cluster.close()
-    workers = "the scheduler's workers" if args.scheduler else f"{args.workers} workers"
+    workers = "the scheduler's workers" if args.scheduler else f"{args.workers} worker{'s' if args.workers > 1 else ''}"
     print(f"dask_lidar: {len(poses)} poses in shards of {args.shard_size} on {workers}: {done - ready:.3g} s tracing and writing "
           f"({len(poses) / (done - ready):.4g} scans/s), {ready - start:.3g} s starting the cluster; wrote {args.output}")
 
