@@ -321,7 +321,10 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
       },
       py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
       "1 inside a closed profile's solid, 0 outside (float32), decided from the profile.");
-  scene.def("geometry_count", &Scene::geometryCount);
+  scene.def("geometry_count", &Scene::geometryCount, "The number of geometries added.");
+  scene.def("memory_bytes", &Scene::memoryBytes,
+            "Heap bytes the scene holds: revolve's shapes, the meshes' arrays, and Embree's allocations for the scene "
+            "(its BVHs; the device's own set-up included).");
 }
 
 }  // namespace revolve::python

@@ -212,6 +212,13 @@ void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
 }  // namespace
 
 RaycastingScene::RaycastingScene() : device_(app::newDevice()), top_(app::newScene(device_.get())) {
+  rtcSetDeviceMemoryMonitorFunction(
+      device_.get(),
+      [](void* user, ssize_t bytes, bool) {
+        static_cast<std::atomic<std::int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
+        return true;
+      },
+      embreeBytes_.get());
   // Watertight triangles, as Open3D's RaycastingScene asks of Embree (a ray through a mesh's edge
   // does not slip between its triangles).
   rtcSetSceneFlags(top_.get(), RTC_SCENE_FLAG_ROBUST);
@@ -221,6 +228,14 @@ RaycastingScene::~RaycastingScene() {
   top_.reset();
   counting_.reset();
   revolutions_.clear();
+}
+
+std::size_t RaycastingScene::memoryBytes() const {
+  std::shared_lock lock(mutex_);
+  std::size_t bytes = std::size_t(std::max<std::int64_t>(0, embreeBytes_->load()));
+  for (const auto& g : revolutions_) bytes += g ? g->shape.memoryBytes() : 0;
+  for (const auto& m : meshes_) bytes += m ? m->vertices.capacity() * sizeof(float) + m->triangles.capacity() * sizeof(std::uint32_t) : 0;
+  return bytes;
 }
 
 std::size_t RaycastingScene::geometryCount() const {

@@ -14,6 +14,7 @@
 
 #include <revolve/revolve.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -40,6 +41,9 @@ class RaycastingScene {
   // vertex count and the vertices against the coordinate limit.
   std::uint32_t addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles);
   std::size_t geometryCount() const;
+  // Heap bytes the geometry holds: revolve's shapes and the meshes' vertices and indices, and what
+  // Embree has allocated for the scene (its memory monitor), device set-up included.
+  std::size_t memoryBytes() const;
 
   // Every query reads `count` rays (ox, oy, oz, dx, dy, dz) or points (x, y, z), refuses those
   // query_limits.h refuses (without tracing them), and returns the index of the first refused,
@@ -88,6 +92,7 @@ class RaycastingScene {
   template <class Body>
   std::optional<std::size_t> forEach(const float* items, std::size_t count, std::size_t width, bool rays, int threads, Body body);
 
+  std::unique_ptr<std::atomic<std::int64_t>> embreeBytes_ = std::make_unique<std::atomic<std::int64_t>>(0);  // outlives the device
   app::Device device_;
   app::Scene top_, counting_;
   std::vector<std::unique_ptr<Revolution>> revolutions_;  // by id; nullptr for meshes
