@@ -407,3 +407,19 @@ def test_tessellate_sweeps_the_profile_into_outward_triangles_within_its_bound()
     assert hit.sum() > 1000 and np.all(np.abs(np.linalg.norm(p, axis=1) - 1) <= bound + 1e-6)
     with pytest.raises(ValueError, match=r"slices = 2: must be a whole number, at least 3"):
         revolve.tessellate(profile, 2)
+
+
+def test_memory_bytes_counts_the_meshes_arrays_and_grows_with_the_profile():
+    rays = np.array([[0, 0, 5, 0, 0, -1]], np.float32)
+    small, large = revolve.RaycastingScene(), revolve.RaycastingScene()
+    small.add_revolution(semicircle(1.0, 16))
+    large.add_revolution(semicircle(1.0, 4096))
+    small.cast_rays(rays), large.cast_rays(rays)  # built
+    assert 0 < small.memory_bytes() < large.memory_bytes()
+    assert large.memory_bytes() > 4096 * 2 * 8  # at least its points, two doubles each
+    vertices, triangles = revolve.tessellate(semicircle(1.0, 64), 128)
+    mesh = revolve.RaycastingScene()
+    mesh.add_triangles(vertices, triangles)
+    mesh.cast_rays(rays)
+    # The arrays' copies, and Embree's BVH over 16384 triangles on top of them.
+    assert mesh.memory_bytes() > vertices.nbytes + triangles.nbytes + 16384 * 16
