@@ -137,6 +137,7 @@ def run(args):
         sys.exit(f"open3d_compare: Open3D {o3d.__version__} casts no rays here (every t_hit inf on a box; Debian 12's 0.16.1 "
                  "does this): nothing to compare with. Run it where Open3D casts rays (Debian 13's python3-open3d 0.19).")
     threads_all = os.cpu_count()
+    load_before = os.getloadavg()
     results = []
     shapes = [make() for make in smooth_shapes.SHAPES if make().name in args.shapes]
     for shape in shapes:
@@ -198,6 +199,8 @@ def run(args):
         "open3d": o3d.__version__, "numpy": np.__version__, "python": platform.python_version(),
         "embree": revolve.embree_version, "rays": args.rays, "repeats": args.repeats, "seed": args.seed,
         "threads_all": threads_all,
+        # The machine's load average (1, 5, 15 minutes) before and after: other work shares its cores.
+        "load_average": {"before": load_before, "after": os.getloadavg()},
         "results": results,
     }
 
