@@ -3,6 +3,7 @@
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python/open3d_compare.py [--rays N] [--repeats R]
         [--json OUT.json] [--shapes sphere,torus,...] [--tolerances 1e-3,1e-4,1e-5]
+    bench/python/open3d_compare.py --markdown OUT.json    (README's table of a results file)
 
 For each of the benchmark's five test shapes (bench/test_shapes.cpp, lines and arcs) and each error
 budget (a fraction of the object's size): Open3D traces the surface tessellated within the budget
@@ -233,7 +234,25 @@ def line_of(r):
             f"{r['speedup_1']:9.2f}x {r['speedup_all']:4.2f}x | {o['memory_bytes'] / 2**20:8.1f} MB {v['memory_bytes'] / 2**10:6.1f} KB")
 
 
+def markdown(report):
+    """README's table of a results file."""
+    lines = ["| shape | budget | Open3D: mesh | Mrays/s, 1 / all threads | max error | revolve: polyline | Mrays/s, 1 / all threads "
+             "| max error | speed-up, 1 / all threads | memory, Open3D's mesh / revolve |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in report["results"]:
+        o, v = r["open3d"], r["revolve"]
+        lines.append(f"| {r['shape']} | {r['tolerance']:.0e} | {o['profile_points']} × {o['slices']} ({o['triangles'] / 1e3:.0f}k triangles) "
+                     f"| {o['mrays_1']:.2f} / {o['mrays_all']:.2f} | {o['max_error']:.1e} | {v['profile_points']} points "
+                     f"| {v['mrays_1']:.2f} / {v['mrays_all']:.2f} | {v['max_error']:.1e} | **{r['speedup_1']:.2f}×** / {r['speedup_all']:.2f}× "
+                     f"| {o['memory_bytes'] / 2**20:.1f} MB / {v['memory_bytes'] / 2**10:.0f} KB |")
+    return "\n".join(lines)
+
+
 def main():
+    if len(sys.argv) == 3 and sys.argv[1] == "--markdown":
+        with open(sys.argv[2]) as f:
+            print(markdown(json.load(f)))
+        return
     if len(sys.argv) == 4 and sys.argv[1] == "--memory":
         measure_memory(sys.argv[2], float(sys.argv[3]))
         return

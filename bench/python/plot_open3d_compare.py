@@ -45,8 +45,10 @@ def main(source, target):
     axes[0][0].set_ylabel("Mrays/s (numpy rays in, arrays out)")
     handles, labels = axes[0][0].get_legend_handles_labels()
     figure.legend(handles, labels, loc="lower center", ncol=2, fontsize=8, frameon=False)
+    load = report.get("load_average", {}).get("before", [None])[0]
+    shared = f", load average {load:.0f} from other work" if load is not None and load >= 1 else ""
     figure.suptitle(f"revolve and Open3D {report['open3d']} from Python: {report['rays'] // 1000}k incoherent rays a shape, "
-                    f"median of {report['repeats']} ({report['cpu']}, {report['threads_all']} threads, {report['date']})", fontsize=10)
+                    f"median of {report['repeats']} ({report['cpu']}, {report['threads_all']} threads{shared}, {report['date']})", fontsize=10)
     figure.tight_layout(rect=(0, 0.1, 1, 0.95))
     figure.savefig(target, dpi=110)
 
