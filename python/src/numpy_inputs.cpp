@@ -33,17 +33,17 @@ std::string shapeText(const py::array& array) {
 QueryArray queryArray(py::handle object, const char* name, py::ssize_t width, const char* columns) {
   const std::string expected = "a numpy array of float32 with shape (..., " + std::to_string(width) + ")";
   if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
-    throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected +
-                         " (numpy.asarray(" + name + ", dtype=numpy.float32))");
+    throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected + " (numpy.asarray(" +
+                         name + ", dtype=numpy.float32))");
   }
   py::array array = asArray(object, name, expected);
   if (!array.dtype().is(py::dtype::of<float>())) {
-    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) + "; expected float32, as Open3D's RaycastingScene (" +
-                         name + ".astype(numpy.float32))");
+    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
+                         "; expected float32, as Open3D's RaycastingScene (" + name + ".astype(numpy.float32))");
   }
   if (array.ndim() < 1 || array.shape(array.ndim() - 1) != width) {
-    throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; the last axis must hold " + std::to_string(width) +
-                          " numbers (" + columns + ")");
+    throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; the last axis must hold " +
+                          std::to_string(width) + " numbers (" + columns + ")");
   }
   if (!(array.flags() & py::array::c_style)) {
     throw py::value_error(std::string(name) + ": not C-contiguous; revolve reads " + name +
@@ -68,15 +68,18 @@ std::string indexText(const char* name, const std::vector<py::ssize_t>& leadingS
   return text + "]";
 }
 
-py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_t rows, py::ssize_t columns, py::ssize_t minRows,
-                                  bool requireFinite) {
-  const std::string shape = "(" + (rows >= 0 ? std::to_string(rows) : std::string("N")) + ", " + std::to_string(columns) + ")";
+py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_t rows, py::ssize_t columns,
+                                 py::ssize_t minRows, bool requireFinite) {
+  const std::string shape =
+      "(" + (rows >= 0 ? std::to_string(rows) : std::string("N")) + ", " + std::to_string(columns) + ")";
   py::array array = asArray(object, name, "a numpy array of shape " + shape);
   const char kind = array.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u') {
-    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) + "; expected real numbers (float or integer)");
+    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
+                         "; expected real numbers (float or integer)");
   }
-  if (array.ndim() != 2 || array.shape(1) != columns || (rows >= 0 && array.shape(0) != rows) || array.shape(0) < minRows) {
+  if (array.ndim() != 2 || array.shape(1) != columns || (rows >= 0 && array.shape(0) != rows) ||
+      array.shape(0) < minRows) {
     throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; expected " + shape +
                           (minRows > 0 ? " with at least " + std::to_string(minRows) + " rows" : std::string()));
   }
@@ -89,8 +92,8 @@ py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_
     if (!std::isfinite(values[i])) {
       char text[32];
       std::snprintf(text, sizeof text, "%.9g", values[i]);
-      throw py::value_error(std::string(name) + "[" + std::to_string(i / columns) + ", " + std::to_string(i % columns) + "] = " + text +
-                            " is not finite");
+      throw py::value_error(std::string(name) + "[" + std::to_string(i / columns) + ", " + std::to_string(i % columns) +
+                            "] = " + text + " is not finite");
     }
   }
   return result;

@@ -19,7 +19,7 @@ namespace py = pybind11;
 struct QueryArray {
   py::array array;  // holds the data alive
   const float* data = nullptr;
-  std::size_t count = 0;                 // rows of `width` floats
+  std::size_t count = 0;                  // rows of `width` floats
   std::vector<py::ssize_t> leadingShape;  // the shape without its last axis: the results' shape
 };
 
@@ -32,8 +32,8 @@ std::string indexText(const char* name, const std::vector<py::ssize_t>& leadingS
 
 // A copy in double, C order, of a real array of exactly `rows` x `columns` (rows < 0: any number
 // of rows, at least `minRows`); every entry finite unless the caller checks that itself.
-py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_t rows, py::ssize_t columns, py::ssize_t minRows = 0,
-                                  bool requireFinite = true);
+py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_t rows, py::ssize_t columns,
+                                 py::ssize_t minRows = 0, bool requireFinite = true);
 
 // A new array of the given shape (the leading shape and, when non-zero, a last axis).
 template <class T>

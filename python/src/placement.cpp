@@ -34,7 +34,8 @@ Vec3d apply(const Matrix3d& m, const Vec3d& v) {
 
 // The inverse by cofactors; a singular matrix gives non-finite entries, which the range test refuses.
 Matrix3d inverseOf(const Matrix3d& m) {
-  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                      m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   Matrix3d r;
   r[0] = {(m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det, (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det,
@@ -92,13 +93,14 @@ std::array<float, 12> Placement::embreeColumns() const {
 Placement placementOf(const double* rows, const Shape& shape) {
   for (int i = 0; i < 16; ++i) {
     if (!std::isfinite(rows[i])) {
-      throw std::invalid_argument("transform[" + std::to_string(i / 4) + ", " + std::to_string(i % 4) + "] = " + number(rows[i]) +
-                                  " is not finite");
+      throw std::invalid_argument("transform[" + std::to_string(i / 4) + ", " + std::to_string(i % 4) +
+                                  "] = " + number(rows[i]) + " is not finite");
     }
   }
   if (rows[12] != 0 || rows[13] != 0 || rows[14] != 0 || rows[15] != 1) {
-    throw std::invalid_argument("transform's last row is (" + number(rows[12]) + ", " + number(rows[13]) + ", " + number(rows[14]) + ", " +
-                                number(rows[15]) + "); a placement is affine: its last row must be (0, 0, 0, 1)");
+    throw std::invalid_argument("transform's last row is (" + number(rows[12]) + ", " + number(rows[13]) + ", " +
+                                number(rows[14]) + ", " + number(rows[15]) +
+                                "); a placement is affine: its last row must be (0, 0, 0, 1)");
   }
   Placement placement;
   for (int r = 0; r < 3; ++r) {
@@ -111,9 +113,10 @@ Placement placementOf(const double* rows, const Shape& shape) {
   const double norm = infinityNorm(placement.linear), inverseNorm = infinityNorm(placement.inverse);
   if (!(inverseNorm * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
       !(norm <= 3 * app::kMaxScale) || !(norm * inverseNorm <= 3 * app::kMaxScaleRatio * (1 + 0x1p-20))) {
-    throw std::invalid_argument(
-        "transform's 3x3 part (infinity norm " + number(norm) + ", of its inverse " + number(inverseNorm) +
-        ") would carry rays beyond Embree's range: its scale factors must lie in [2^-16, 2^40], within a factor 2^16 of each other");
+    throw std::invalid_argument("transform's 3x3 part (infinity norm " + number(norm) + ", of its inverse " +
+                                number(inverseNorm) +
+                                ") would carry rays beyond Embree's range: its scale factors must lie in [2^-16, "
+                                "2^40], within a factor 2^16 of each other");
   }
   placement.similarity = similarityScale(placement.linear);
 

@@ -36,15 +36,17 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
   if (!toleranceObject.is_none()) {
     const double value = toleranceObject.cast<double>();
     if (!(value > 0 && std::isfinite(value))) {
-      throw py::value_error("tolerance = " + std::string(py::repr(toleranceObject)) + ": must be a positive finite number");
+      throw py::value_error("tolerance = " + std::string(py::repr(toleranceObject)) +
+                            ": must be a positive finite number");
     }
     tolerance = value;
   }
   try {
     if (splineObject.is_none()) {
       if (tolerance) {
-        throw py::value_error("tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
-                              "a polyline is traced as given");
+        throw py::value_error(
+            "tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
+            "a polyline is traced as given");
       }
       Profile profile(points);
       warnAbout(profile.warnings(), "points");
@@ -53,7 +55,8 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
     const std::string name = splineObject.cast<std::string>();
     const std::optional<SplineKind> kind = splineKindNamed(name);
     if (!kind) {
-      throw py::value_error("spline = \"" + name + "\": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
+      throw py::value_error("spline = \"" + name +
+                            "\": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
     }
     Spline curve(*kind, points);
     warnAbout(curve.warnings(), "points");
@@ -87,8 +90,9 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
     const auto raw = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
     for (py::ssize_t i = 0; i < raw.size(); ++i) {
       if (raw.data()[i] >= std::uint64_t(vertices.shape(0))) {
-        throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " +
-                              std::to_string(raw.data()[i]) + " is not a vertex: there are " + std::to_string(vertices.shape(0)));
+        throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
+                              "] = " + std::to_string(raw.data()[i]) + " is not a vertex: there are " +
+                              std::to_string(vertices.shape(0)));
       }
     }
   }
@@ -96,7 +100,8 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
   for (py::ssize_t i = 0; i < vertices.size(); ++i) {
     const double x = vertices.data()[i];
     if (!(std::abs(x) <= app::kMaxWorldCoordinate)) {
-      throw py::value_error("vertex_positions[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " + std::to_string(x) +
+      throw py::value_error("vertex_positions[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
+                            "] = " + std::to_string(x) +
                             " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
     }
     positions[std::size_t(i)] = float(x);
@@ -105,8 +110,8 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
   for (py::ssize_t i = 0; i < indices.size(); ++i) {
     const std::int64_t k = indices.data()[i];
     if (k < 0 || k >= vertices.shape(0)) {
-      throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " + std::to_string(k) +
-                            " is not a vertex: there are " + std::to_string(vertices.shape(0)));
+      throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " +
+                            std::to_string(k) + " is not a vertex: there are " + std::to_string(vertices.shape(0)));
     }
     corners[std::size_t(i)] = std::uint32_t(k);
   }
@@ -162,7 +167,8 @@ py::dict castRays(Scene& scene, py::handle rays, int threads) {
   auto t = newArray<float>(in.leadingShape);
   auto geometry = newArray<std::uint32_t>(in.leadingShape), primitive = newArray<std::uint32_t>(in.leadingShape);
   auto uv = newArray<float>(in.leadingShape, 2), normal = newArray<float>(in.leadingShape, 3);
-  const Scene::Hits out{t.mutable_data(), geometry.mutable_data(), primitive.mutable_data(), uv.mutable_data(), normal.mutable_data()};
+  const Scene::Hits out{t.mutable_data(), geometry.mutable_data(), primitive.mutable_data(), uv.mutable_data(),
+                        normal.mutable_data()};
   std::optional<std::size_t> refused;
   {
     py::gil_scoped_release release;
@@ -181,7 +187,8 @@ py::dict castRays(Scene& scene, py::handle rays, int threads) {
 py::array testOcclusions(Scene& scene, py::handle rays, double tnear, double tfar, int threads) {
   const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
   if (!(tnear >= 0 && tnear <= tfar)) {
-    throw py::value_error("tnear = " + std::to_string(tnear) + ", tfar = " + std::to_string(tfar) + ": need 0 <= tnear <= tfar");
+    throw py::value_error("tnear = " + std::to_string(tnear) + ", tfar = " + std::to_string(tfar) +
+                          ": need 0 <= tnear <= tfar");
   }
   auto occluded = newArray<bool>(in.leadingShape);
   bool* out = occluded.mutable_data();
@@ -217,10 +224,11 @@ ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, 
   std::string limitation = scene.distanceLimitation();
   if (limitation.empty() && signedDistance) limitation = scene.solidLimitation();
   if (!limitation.empty()) throw py::value_error(std::string(method) + ": " + limitation);
-  ClosestArrays a{newArray<float>(in.leadingShape, 3), newArray<float>(in.leadingShape, 2), newArray<float>(in.leadingShape, 3),
-                  newArray<float>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape)};
-  const Scene::Closest out{a.points.mutable_data(), a.geometry.mutable_data(), a.primitive.mutable_data(), a.uv.mutable_data(),
-                           a.normal.mutable_data(), a.distance.mutable_data()};
+  ClosestArrays a{newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape, 2),
+                  newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape),
+                  newArray<std::uint32_t>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape)};
+  const Scene::Closest out{a.points.mutable_data(), a.geometry.mutable_data(), a.primitive.mutable_data(),
+                           a.uv.mutable_data(),     a.normal.mutable_data(),   a.distance.mutable_data()};
   std::optional<std::size_t> refused;
   {
     py::gil_scoped_release release;
@@ -253,7 +261,8 @@ void checkSamples(int nsamples) {
 }  // namespace
 
 void bindRaycastingScene(py::module_& m) {
-  py::class_<Scene> scene(m, "RaycastingScene", R"(Surfaces of revolution traced exactly, and triangle meshes, in one Embree scene.
+  py::class_<Scene> scene(m, "RaycastingScene",
+                          R"(Surfaces of revolution traced exactly, and triangle meshes, in one Embree scene.
 
 Open3D's RaycastingScene (open3d.t.geometry, 0.19) with its method names, arguments, result keys,
 shapes and dtypes; numpy arrays in and out. Rays are float32 arrays of shape (..., 6) (origin,
@@ -268,7 +277,8 @@ direction), query points float32 (..., 3), both C-contiguous (read in place). Ge
         const Placement placement = placementFrom(transform, shape);
         return s.addRevolution(std::move(shape), placement);
       },
-      py::arg("points"), py::arg("transform") = py::none(), py::arg("spline") = py::none(), py::arg("tolerance") = py::none(),
+      py::arg("points"), py::arg("transform") = py::none(), py::arg("spline") = py::none(),
+      py::arg("tolerance") = py::none(),
       R"(Adds the surface swept by a profile about the z axis; returns its geometry id.
 
 points: (N, 2) array of (r, z), r >= 0, a polyline, or a spline's points with `spline`.
@@ -303,7 +313,9 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
       "Exact closest surface points: dict of points, geometry_ids, primitive_ids, primitive_uvs, primitive_normals.");
   scene.def(
       "compute_distance",
-      [](Scene& s, py::handle points, int threads) { return closest(s, "compute_distance", points, false, threads).distance; },
+      [](Scene& s, py::handle points, int threads) {
+        return closest(s, "compute_distance", points, false, threads).distance;
+      },
       py::arg("query_points"), py::arg("nthreads") = 0, "Exact distance to the nearest surface (float32).");
   scene.def(
       "compute_signed_distance",
@@ -312,7 +324,8 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
         return closest(s, "compute_signed_distance", points, true, threads).distance;
       },
       py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
-      "Exact distance, negative inside a closed profile's solid (decided from the profile; nsamples, Open3D's ray vote, is not needed).");
+      "Exact distance, negative inside a closed profile's solid (decided from the profile; nsamples, Open3D's ray "
+      "vote, is not needed).");
   scene.def(
       "compute_occupancy",
       [](Scene& s, py::handle points, int threads, int nsamples) {

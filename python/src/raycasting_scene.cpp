@@ -70,7 +70,9 @@ void countCrossing(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-Vec3d cross(const Vec3d& a, const Vec3d& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+Vec3d cross(const Vec3d& a, const Vec3d& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
@@ -186,7 +188,8 @@ bool isIdentity(const Placement& p) {
 
 // Attaches `geometry` to `scene` under `id`: itself, or through an instance of `prototype` (made
 // here) under a placement other than the identity.
-void attach(RTCDevice device, RTCScene scene, const Geometry& geometry, app::Scene& prototype, const Placement& placement, unsigned id) {
+void attach(RTCDevice device, RTCScene scene, const Geometry& geometry, app::Scene& prototype,
+            const Placement& placement, unsigned id) {
   if (isIdentity(placement)) {
     rtcAttachGeometryByID(scene, geometry.handle(), id);
     return;
@@ -234,7 +237,8 @@ std::size_t RaycastingScene::memoryBytes() const {
   std::shared_lock lock(mutex_);
   std::size_t bytes = std::size_t(std::max<std::int64_t>(0, embreeBytes_->load()));
   for (const auto& g : revolutions_) bytes += g ? g->shape.memoryBytes() : 0;
-  for (const auto& m : meshes_) bytes += m ? m->vertices.capacity() * sizeof(float) + m->triangles.capacity() * sizeof(std::uint32_t) : 0;
+  for (const auto& m : meshes_)
+    bytes += m ? m->vertices.capacity() * sizeof(float) + m->triangles.capacity() * sizeof(std::uint32_t) : 0;
   return bytes;
 }
 
@@ -247,7 +251,8 @@ std::uint32_t RaycastingScene::addRevolution(Shape shape, const Placement& place
   std::unique_lock lock(mutex_);
   if (revolutions_.size() >= kInvalidId) throw std::length_error("a scene holds at most 2^32 - 1 geometries");
   const auto id = std::uint32_t(revolutions_.size());
-  auto g = std::make_unique<Revolution>(Revolution{std::move(shape), placement, nullptr, std::nullopt, nullptr, std::nullopt});
+  auto g = std::make_unique<Revolution>(
+      Revolution{std::move(shape), placement, nullptr, std::nullopt, nullptr, std::nullopt});
   g->geometry.emplace(device_.get(), g->shape);
   attach(device_.get(), top_.get(), *g->geometry, g->prototype, g->placement, id);
   revolutions_.push_back(std::move(g));
@@ -269,8 +274,8 @@ std::uint32_t RaycastingScene::addTriangles(std::span<const float> vertices, std
   mesh->vertexCount = vertices.size() / 3;
   mesh->triangleCount = triangles.size() / 3;
   RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->vertices.data(), 0, 3 * sizeof(float),
-                             mesh->vertexCount);
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->vertices.data(), 0,
+                             3 * sizeof(float), mesh->vertexCount);
   rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->triangles.data(), 0,
                              3 * sizeof(std::uint32_t), mesh->triangleCount);
   rtcCommitGeometry(geometry);
@@ -317,8 +322,8 @@ void RaycastingScene::buildCountingScene() {
     } else {
       const Mesh& mesh = *meshes_[id];
       RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-      rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0, 3 * sizeof(float),
-                                 mesh.vertexCount);
+      rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
+                                 3 * sizeof(float), mesh.vertexCount);
       rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
                                  3 * sizeof(std::uint32_t), mesh.triangleCount);
       rtcSetGeometryIntersectFilterFunction(geometry, countCrossing);
@@ -334,30 +339,32 @@ void RaycastingScene::buildCountingScene() {
 }
 
 template <class Body>
-std::optional<std::size_t> RaycastingScene::forEach(const float* items, std::size_t count, std::size_t width, bool rays, int threads,
-                                                    Body body) {
+std::optional<std::size_t> RaycastingScene::forEach(const float* items, std::size_t count, std::size_t width, bool rays,
+                                                    int threads, Body body) {
   std::atomic<std::size_t> firstRefused{std::numeric_limits<std::size_t>::max()};
   std::shared_lock lock(mutex_);
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024), [&](const tbb::blocked_range<std::size_t>& range) {
-      embree::RayQuery query;
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const float* item = items + width * i;
-        if (!(rays ? rayAccepted(item) : pointAccepted(item))) {
-          recordMinimum(firstRefused, i);
-          continue;
-        }
-        body(query, i, item);
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        embree::RayQuery query;
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          const float* item = items + width * i;
+                          if (!(rays ? rayAccepted(item) : pointAccepted(item))) {
+                            recordMinimum(firstRefused, i);
+                            continue;
+                          }
+                          body(query, i, item);
+                        }
+                      });
   });
   const std::size_t first = firstRefused.load();
   if (first == std::numeric_limits<std::size_t>::max()) return std::nullopt;
   return first;
 }
 
-std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::size_t count, const Hits& out, int threads) {
+std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::size_t count, const Hits& out,
+                                                     int threads) {
   commitIfChanged();
   RTCScene top = top_.get();
   return forEach(rays, count, 6, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
@@ -387,14 +394,15 @@ std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::siz
       normal[0] = rh.hit.Ng_x, normal[1] = rh.hit.Ng_y, normal[2] = rh.hit.Ng_z;  // unit already, in the world
     } else {
       // A triangle: Embree's normal made unit length as Open3D does it, in float.
-      const float scale = 1.0f / std::sqrt(rh.hit.Ng_x * rh.hit.Ng_x + rh.hit.Ng_y * rh.hit.Ng_y + rh.hit.Ng_z * rh.hit.Ng_z);
+      const float scale =
+          1.0f / std::sqrt(rh.hit.Ng_x * rh.hit.Ng_x + rh.hit.Ng_y * rh.hit.Ng_y + rh.hit.Ng_z * rh.hit.Ng_z);
       normal[0] = rh.hit.Ng_x * scale, normal[1] = rh.hit.Ng_y * scale, normal[2] = rh.hit.Ng_z * scale;
     }
   });
 }
 
-std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, std::size_t count, float tnear, float tfar, bool* out,
-                                                           int threads) {
+std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, std::size_t count, float tnear,
+                                                           float tfar, bool* out, int threads) {
   commitIfChanged();
   RTCScene top = top_.get();
   return forEach(rays, count, 6, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
@@ -404,7 +412,8 @@ std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, st
   });
 }
 
-std::optional<std::size_t> RaycastingScene::countIntersections(const float* rays, std::size_t count, std::int32_t* out, int threads) {
+std::optional<std::size_t> RaycastingScene::countIntersections(const float* rays, std::size_t count, std::int32_t* out,
+                                                               int threads) {
   commitIfChanged();
   buildCountingScene();
   RTCScene counting = counting_.get();
@@ -423,7 +432,8 @@ std::string RaycastingScene::distanceLimitation() const {
   for (std::size_t id = 0; id < revolutions_.size(); ++id) {
     if (revolutions_[id] && revolutions_[id]->placement.similarity == 0) {
       return "geometry " + std::to_string(id) +
-             " is placed by a transform that is not a similarity (rotation, uniform scale, translation), under which its "
+             " is placed by a transform that is not a similarity (rotation, uniform scale, translation), under which "
+             "its "
              "distances cannot be taken exactly in its meridian plane; scale the profile's r and z instead";
     }
   }
@@ -435,7 +445,8 @@ std::string RaycastingScene::solidLimitation() const {
   for (std::size_t id = 0; id < revolutions_.size(); ++id) {
     if (!revolutions_[id]) {
       return "geometry " + std::to_string(id) +
-             " is a triangle mesh; revolve decides inside and outside from closed profiles only (Open3D's RaycastingScene "
+             " is a triangle mesh; revolve decides inside and outside from closed profiles only (Open3D's "
+             "RaycastingScene "
              "votes with rays for meshes)";
     }
     const Shape& shape = revolutions_[id]->shape;
@@ -448,8 +459,8 @@ std::string RaycastingScene::solidLimitation() const {
   return "";
 }
 
-std::optional<std::size_t> RaycastingScene::closestPoints(const float* points, std::size_t count, const Closest& out, bool signedDistance,
-                                                          int threads) {
+std::optional<std::size_t> RaycastingScene::closestPoints(const float* points, std::size_t count, const Closest& out,
+                                                          bool signedDistance, int threads) {
   commitIfChanged();
   RTCScene top = top_.get();
   return forEach(points, count, 3, false, threads, [&](embree::RayQuery&, std::size_t i, const float* p) {

@@ -57,7 +57,8 @@ class RaycastingScene {
     float* normal;  // 3 a ray: unit, world space, the surface's own side (not turned to the ray)
   };
   std::optional<std::size_t> castRays(const float* rays, std::size_t count, const Hits& out, int threads);
-  std::optional<std::size_t> testOcclusions(const float* rays, std::size_t count, float tnear, float tfar, bool* out, int threads);
+  std::optional<std::size_t> testOcclusions(const float* rays, std::size_t count, float tnear, float tfar, bool* out,
+                                            int threads);
   // Hits along the whole ray (t >= 0), each surface crossing once (Open3D's rule for a hit on an
   // edge shared by two triangles of a mesh).
   std::optional<std::size_t> countIntersections(const float* rays, std::size_t count, std::int32_t* out, int threads);
@@ -73,8 +74,8 @@ class RaycastingScene {
   // Exact closest surface points, distances in double rounded once. `signedDistance`: negative
   // inside any closed revolution (solid_inside.h). Precondition: distanceLimitation() (and for
   // signed, solidLimitation()) empty.
-  std::optional<std::size_t> closestPoints(const float* points, std::size_t count, const Closest& out, bool signedDistance,
-                                           int threads);
+  std::optional<std::size_t> closestPoints(const float* points, std::size_t count, const Closest& out,
+                                           bool signedDistance, int threads);
   // Inside (1) or outside (0) the union of the closed revolutions. Precondition: solidLimitation() empty.
   std::optional<std::size_t> occupancy(const float* points, std::size_t count, float* out, int threads);
 
@@ -90,9 +91,11 @@ class RaycastingScene {
   void commitIfChanged();
   void buildCountingScene();
   template <class Body>
-  std::optional<std::size_t> forEach(const float* items, std::size_t count, std::size_t width, bool rays, int threads, Body body);
+  std::optional<std::size_t> forEach(const float* items, std::size_t count, std::size_t width, bool rays, int threads,
+                                     Body body);
 
-  std::unique_ptr<std::atomic<std::int64_t>> embreeBytes_ = std::make_unique<std::atomic<std::int64_t>>(0);  // outlives the device
+  std::unique_ptr<std::atomic<std::int64_t>> embreeBytes_ =
+      std::make_unique<std::atomic<std::int64_t>>(0);  // outlives the device
   app::Device device_;
   app::Scene top_, counting_;
   std::vector<std::unique_ptr<Revolution>> revolutions_;  // by id; nullptr for meshes

@@ -36,6 +36,16 @@ namespace {
 
 std::string pathOf(py::handle path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
 
+// The build settings, checked before a scene file is read.
+void checkSettings(const std::string& geometry, std::uint32_t slices) {
+  if (geometry != "mibit" && geometry != "mesh") {
+    throw py::value_error("geometry = \"" + geometry +
+                          "\": expected \"mibit\" (exact) or \"mesh\" (tessellated, as --geometry mesh)");
+  }
+  if (slices < 3 || slices > (1u << 16))
+    throw py::value_error("slices = " + std::to_string(slices) + ": must lie in [3, 65536]");
+}
+
 // A scene file as revolve-lidar (--geometry mibit or mesh) and revolve-clearance build it.
 struct ToolScene {
   std::string path;
@@ -44,11 +54,8 @@ struct ToolScene {
   std::mutex clearanceMutex;
   std::map<double, std::unique_ptr<robot::ClearanceMap>> clearanceMaps;  // by ground height
 
-  ToolScene(const std::string& file, const std::string& geometry, std::uint32_t slices) : path(file), description(io::readScene(file)) {
-    if (geometry != "mibit" && geometry != "mesh") {
-      throw py::value_error("geometry = \"" + geometry + "\": expected \"mibit\" (exact) or \"mesh\" (tessellated, as --geometry mesh)");
-    }
-    if (slices < 3 || slices > (1u << 16)) throw py::value_error("slices = " + std::to_string(slices) + ": must lie in [3, 65536]");
+  ToolScene(const std::string& file, const std::string& geometry, std::uint32_t slices)
+      : path(file), description((checkSettings(geometry, slices), io::readScene(file))) {
     for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
     warnAbout(scene::degenerateObjectWarnings(description, false));
     scene::BuildSettings settings;
@@ -74,7 +81,8 @@ std::shared_ptr<ToolScene> sceneOf(py::handle scene) {
 // array, checked by the reader's rules.
 std::vector<io::RobotPose> posesOf(py::handle poses) {
   if (py::isinstance<py::str>(poses) || py::hasattr(poses, "__fspath__")) return io::readPosesCsv(pathOf(poses));
-  py::array array = py::isinstance<py::array>(poses) ? py::reinterpret_borrow<py::array>(poses) : py::array::ensure(poses);
+  py::array array =
+      py::isinstance<py::array>(poses) ? py::reinterpret_borrow<py::array>(poses) : py::array::ensure(poses);
   const py::ssize_t columns = array && array.ndim() == 2 ? array.shape(1) : 0;
   if (columns != 3 && columns != 4) {
     throw py::value_error("poses: shape " + (array ? shapeText(array) : std::string("?")) +
@@ -88,8 +96,8 @@ std::vector<io::RobotPose> posesOf(py::handle poses) {
       if (!(std::abs(values.at(i, c)) <= app::kMaxWorldCoordinate)) {
         char text[32];
         std::snprintf(text, sizeof text, "%.9g", values.at(i, c));
-        throw py::value_error("poses[" + std::to_string(i) + ", " + std::to_string(c) + "]: " + names[c] + " = " + text +
-                              " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+        throw py::value_error("poses[" + std::to_string(i) + ", " + std::to_string(c) + "]: " + names[c] + " = " +
+                              text + " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
       }
     }
     io::RobotPose& p = result[i];
@@ -128,10 +136,12 @@ struct ScanArrays {
 
 ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimuths) {
   const std::vector<py::ssize_t> shape{py::ssize_t(poses), py::ssize_t(rings), py::ssize_t(azimuths)};
-  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<std::int32_t>(shape), newArray<std::uint16_t>(shape)};
+  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<std::int32_t>(shape),
+          newArray<std::uint16_t>(shape)};
 }
 
-py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, int threads, std::uint64_t firstPose) {
+py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, int threads,
+              std::uint64_t firstPose) {
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
   if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
@@ -181,9 +191,11 @@ struct ScanFile {
   std::uint64_t nextPose = 0;
   bool committed = false;
 
-  ScanFile(const std::string& file, const PySensor& sensor, std::uint64_t poses, const std::string& data, const std::vector<std::string>& inputs)
+  ScanFile(const std::string& file, const PySensor& sensor, std::uint64_t poses, const std::string& data,
+           const std::vector<std::string>& inputs)
       : path(file) {
-    if (data != "ascii" && data != "binary") throw py::value_error("data = \"" + data + "\": expected \"ascii\" or \"binary\"");
+    if (data != "ascii" && data != "binary")
+      throw py::value_error("data = \"" + data + "\": expected \"ascii\" or \"binary\"");
     const io::ScanFormat format = io::scanFormatFor(path);
     if (data == "binary" && format != io::ScanFormat::pcd) {
       throw py::value_error(path + ": data=\"binary\" applies to .pcd outputs, and this one is a CSV table");
@@ -203,8 +215,8 @@ struct ScanFile {
   void write(std::uint64_t firstPose, const py::dict& scan) {
     if (committed) throw py::value_error(path + ": already committed");
     if (firstPose != nextPose) {
-      throw py::value_error(path + ": poses are written in order: expected pose " + std::to_string(nextPose) + ", got first_pose = " +
-                            std::to_string(firstPose));
+      throw py::value_error(path + ": poses are written in order: expected pose " + std::to_string(nextPose) +
+                            ", got first_pose = " + std::to_string(firstPose));
     }
     const auto ranges = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["ranges"]);
     const auto points = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["points"]);
@@ -212,17 +224,20 @@ struct ScanFile {
     const std::size_t perPose = layout.beamsPerPose();
     if (!ranges || !points || !ids || ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
         points.size() != 3 * ranges.size() || ids.size() != ranges.size()) {
-      throw py::value_error(path + ": a scan dict of Lidar.scan for this sensor is expected (ranges (P, " + std::to_string(layout.rings()) +
-                            ", " + std::to_string(layout.azimuths.size()) + "), points, ids)");
+      throw py::value_error(path + ": a scan dict of Lidar.scan for this sensor is expected (ranges (P, " +
+                            std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
+                            "), points, ids)");
     }
     const std::uint64_t poses = std::uint64_t(ranges.shape(0));
     if (firstPose + poses > layout.poses) {
-      throw py::value_error(path + ": poses " + std::to_string(firstPose) + " to " + std::to_string(firstPose + poses - 1) +
-                            " lie beyond the file's " + std::to_string(layout.poses));
+      throw py::value_error(path + ": poses " + std::to_string(firstPose) + " to " +
+                            std::to_string(firstPose + poses - 1) + " lie beyond the file's " +
+                            std::to_string(layout.poses));
     }
     std::vector<io::BeamReturn> beams(std::size_t(ranges.size()));
     for (std::size_t b = 0; b < beams.size(); ++b) {
-      beams[b] = {ranges.data()[b], points.data()[3 * b], points.data()[3 * b + 1], points.data()[3 * b + 2], ids.data()[b]};
+      beams[b] = {ranges.data()[b], points.data()[3 * b], points.data()[3 * b + 1], points.data()[3 * b + 2],
+                  ids.data()[b]};
     }
     writer->write(firstPose * perPose, beams);
     nextPose += poses;
@@ -239,11 +254,13 @@ struct ScanFile {
   }
 };
 
-py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, double radius, double zMin, double zMax, std::optional<double> ground,
-                           int threads) {
-  if (!(radius > 0 && std::isfinite(radius))) throw py::value_error("radius = " + std::to_string(radius) + ": must be positive and finite");
+py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, double radius, double zMin, double zMax,
+                           std::optional<double> ground, int threads) {
+  if (!(radius > 0 && std::isfinite(radius)))
+    throw py::value_error("radius = " + std::to_string(radius) + ": must be positive and finite");
   if (!(std::isfinite(zMin) && std::isfinite(zMax) && zMin < zMax)) {
-    throw py::value_error("z_min = " + std::to_string(zMin) + ", z_max = " + std::to_string(zMax) + ": need finite z_min < z_max");
+    throw py::value_error("z_min = " + std::to_string(zMin) + ", z_max = " + std::to_string(zMax) +
+                          ": need finite z_min < z_max");
   }
   if (ground && !std::isfinite(*ground)) throw py::value_error("ground: must be a finite height (or None)");
   if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
@@ -271,7 +288,8 @@ py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, doubl
     collides.mutable_at(i) = r.collides;
     object.mutable_at(i) = r.object;
     exact.mutable_at(i) = r.exact;
-    for (int k = 0; k < 3; ++k) point.mutable_at(i, k) = r.object >= 0 ? r.point[k] : std::numeric_limits<double>::quiet_NaN();
+    for (int k = 0; k < 3; ++k)
+      point.mutable_at(i, k) = r.object >= 0 ? r.point[k] : std::numeric_limits<double>::quiet_NaN();
   }
   py::dict result;
   result["clearance"] = clearance;
@@ -285,7 +303,8 @@ py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, doubl
 }  // namespace
 
 void bindRobot(py::module_& m) {
-  py::class_<ToolScene, std::shared_ptr<ToolScene>>(m, "Scene", R"(A scene file (JSON, revolve-render's format) built as revolve-lidar and revolve-clearance build it.
+  py::class_<ToolScene, std::shared_ptr<ToolScene>>(
+      m, "Scene", R"(A scene file (JSON, revolve-render's format) built as revolve-lidar and revolve-clearance build it.
 
 geometry: "mibit" traces every surface of revolution exactly; "mesh" tessellates each into `slices`
 azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
@@ -297,7 +316,8 @@ azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
       .def_property_readonly("object_count", [](const ToolScene& s) { return s.description.objects.size(); })
       .def_property_readonly("quad_count", [](const ToolScene& s) { return s.description.quads.size(); });
 
-  py::class_<PySensor>(m, "Lidar", R"(The laser range-finder of revolve-lidar: a sensor file's path, or its JSON as a dict.
+  py::class_<PySensor>(m, "Lidar",
+                       R"(The laser range-finder of revolve-lidar: a sensor file's path, or its JSON as a dict.
 
 scan(scene, poses) traces every beam from every pose with revolve-lidar's conventions (ROS
 LaserScan: no return is inf, never clamped; seeded per-beam noise) and returns a dict of arrays
@@ -306,7 +326,8 @@ world frame, nan for no return), rings (uint16) and ids (int32: the scene's obje
 after the objects, -1 for no return), bit for bit revolve-lidar's.)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = 0, py::arg("first_pose") = 0,
-           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv path; "
+           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv "
+           "path; "
            "first_pose: the number of poses[0] in a scan traced in parts (its noise is that pose's).")
       .def_property_readonly("azimuths",
                              [](const PySensor& s) {
@@ -315,36 +336,41 @@ after the objects, -1 for no return), bit for bit revolve-lidar's.)")
                              })
       .def_property_readonly("elevations",
                              [](const PySensor& s) {
-                               return py::array_t<double>(py::ssize_t(s.sensor.elevations.size()), s.sensor.elevations.data());
+                               return py::array_t<double>(py::ssize_t(s.sensor.elevations.size()),
+                                                          s.sensor.elevations.data());
                              })
       .def_property_readonly("beams_per_pose", [](const PySensor& s) {
         return std::size_t(s.sensor.horizontal.samples) * s.sensor.elevations.size();
       });
 
-  py::class_<ScanFile>(m, "ScanFile", R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.
+  py::class_<ScanFile>(m, "ScanFile",
+                       R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.
 
 The file goes to a temporary beside it, renamed into place by commit() once every pose is written;
 dropped (or a failed run) it leaves nothing. `inputs` name files it must not overwrite.)")
-      .def(py::init([](py::handle path, const PySensor& sensor, std::uint64_t poses, const std::string& data, const std::vector<py::object>& inputs) {
+      .def(py::init([](py::handle path, const PySensor& sensor, std::uint64_t poses, const std::string& data,
+                       const std::vector<py::object>& inputs) {
              std::vector<std::string> paths;
              for (const py::object& input : inputs) paths.push_back(pathOf(input));
              return std::make_unique<ScanFile>(pathOf(path), sensor, poses, data, paths);
            }),
-           py::arg("path"), py::arg("lidar"), py::arg("poses"), py::arg("data") = "ascii", py::arg("inputs") = std::vector<py::object>{})
+           py::arg("path"), py::arg("lidar"), py::arg("poses"), py::arg("data") = "ascii",
+           py::arg("inputs") = std::vector<py::object>{})
       .def("write", &ScanFile::write, py::arg("first_pose"), py::arg("scan"))
       .def("commit", &ScanFile::commit)
       .def_property_readonly("poses_written", [](const ScanFile& f) { return f.nextPose; });
 
-  m.def("cylinder_clearance", &cylinderClearance, py::arg("scene"), py::arg("poses"), py::arg("radius"), py::arg("z_min"), py::arg("z_max"),
-        py::arg("ground") = py::none(), py::arg("threads") = 0,
+  m.def("cylinder_clearance", &cylinderClearance, py::arg("scene"), py::arg("poses"), py::arg("radius"),
+        py::arg("z_min"), py::arg("z_max"), py::arg("ground") = py::none(), py::arg("threads") = 0,
         R"(revolve-clearance's clearance of a vertical-cylinder robot at each pose.
 
 The robot is a solid cylinder of `radius` from z + z_min to z + z_max at (x, y) of each pose. Returns
 a dict: clearance (float64, signed: negative when an obstacle's surface enters the robot; inf with
 no obstacle), collides (bool), object (int64, -1 for none), point (float64 (N, 3), a point of the
 nearest obstacle's surface), exact (bool: false where the clearance is a lower bound).)");
-  m.def("read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathOf(path))); }, py::arg("path"),
-        "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
+  m.def(
+      "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathOf(path))); }, py::arg("path"),
+      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
 }
 
 }  // namespace revolve::python

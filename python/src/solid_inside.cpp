@@ -63,7 +63,8 @@ bool insideSolid(const Shape& shape, double rho, double z) noexcept {
   if (const Spline* spline = shape.spline()) {
     const std::span<const Point2> b = spline->bezier();
     for (std::size_t piece = 0; piece + 3 < b.size(); piece += 3) {
-      const Cubic c{{b[piece].r, b[piece + 1].r, b[piece + 2].r, b[piece + 3].r}, {b[piece].z, b[piece + 1].z, b[piece + 2].z, b[piece + 3].z}};
+      const Cubic c{{b[piece].r, b[piece + 1].r, b[piece + 2].r, b[piece + 3].r},
+                    {b[piece].z, b[piece + 1].z, b[piece + 2].z, b[piece + 3].z}};
       double turns[2];
       const int count = zTurns(c, turns);
       double start = 0;

@@ -71,7 +71,8 @@ def paraboloid_hits(rays, top):
 
 def segment_distances(rho, z, points):
     """Distance from each meridian point (rho, z) to the polyline `points` (N, 2), brute force over
-    its segments, with the index of the nearest segment and the nearest point."""
+    its segments, with the index of the nearest segment, the nearest point, and the distance to the
+    second nearest segment (how far the answer is from a tie)."""
     a, b = points[:-1], points[1:]
     e = b - a
     q = np.stack([rho, z], axis=1)[:, None, :]
@@ -80,7 +81,8 @@ def segment_distances(rho, z, points):
     dist = np.linalg.norm(q - nearest, axis=2)
     best = np.argmin(dist, axis=1)
     rows = np.arange(len(rho))
-    return dist[rows, best], best, nearest[rows, best]
+    second = np.sort(dist, axis=1)[:, 1] if dist.shape[1] > 1 else np.full(len(rho), np.inf)
+    return dist[rows, best], best, nearest[rows, best], second
 
 
 def semicircle(radius, segments):

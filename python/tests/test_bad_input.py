@@ -178,6 +178,10 @@ def test_meshes_with_bad_indices_or_vertices():
 
 
 def test_scene_files_sensors_and_poses():
+    with pytest.raises(ValueError, match=r'geometry = "voxels": expected "mibit" \(exact\) or "mesh"'):
+        revolve.Scene("missing.json", geometry="voxels")  # checked before the file is read
+    with pytest.raises(ValueError, match=r"slices = 2: must lie in \[3, 65536\]"):
+        revolve.Scene("missing.json", geometry="mesh", slices=2)
     with pytest.raises(ValueError, match=r"missing.json"):
         revolve.RaycastingScene().load("missing.json")
     with pytest.raises(ValueError, match=r"horizontal.samples"):
