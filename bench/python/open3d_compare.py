@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""revolve's RaycastingScene beside Open3D's, from Python with numpy rays (README, "Python").
+"""revolve's RaycastingScene beside Open3D's, from Python with numpy rays (docs/python.md).
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python/open3d_compare.py [--rays N] [--repeats R]
         [--json OUT.json] [--shapes sphere,torus,...] [--tolerances 1e-3,1e-4,1e-5]
-    bench/python/open3d_compare.py --markdown OUT.json    (README's table of a results file)
+    bench/python/open3d_compare.py --markdown OUT.json    (docs/python.md's table of a results file)
 
 For each of the benchmark's five test shapes (bench/test_shapes.cpp, lines and arcs) and each error
 budget (a fraction of the object's size): Open3D traces the surface tessellated within the budget
@@ -235,7 +235,7 @@ def line_of(r):
 
 
 def markdown(report):
-    """README's table of a results file."""
+    """docs/python.md's table of a results file."""
     lines = ["| shape | budget | Open3D: mesh | Mrays/s, 1 / all threads | max error | revolve: polyline | Mrays/s, 1 / all threads "
              "| max error | speed-up, 1 / all threads | memory, Open3D's mesh / revolve |",
              "|---|---|---|---|---|---|---|---|---|---|"]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Draws README's figure of revolve against Open3D from bench/python/open3d_compare.py's JSON
+"""Draws docs/python.md's figure of revolve against Open3D from bench/python/open3d_compare.py's JSON
 (Debian's python3-matplotlib).
 
     bench/python/plot_open3d_compare.py bench/results/python/open3d_compare.json docs/open3d_comparison.png

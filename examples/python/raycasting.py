@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""README's Python example: revolve's RaycastingScene where Open3D's would be, with exact surfaces of
+"""The example of docs/python.md: revolve's RaycastingScene where Open3D's would be, with exact surfaces of
 revolution beside a triangle mesh. Run it as PYTHONPATH=build/python /usr/bin/python3 examples/python/raycasting.py."""
 
 import numpy as np

@@ -67,7 +67,7 @@ class RaycastingScene {
     float* point;  // 3 a point
     std::uint32_t* geometry;
     std::uint32_t* primitive;
-    float* uv;        // 2 a point (revolutions: u exact, v along the segment or part, see README)
+    float* uv;        // 2 a point (revolutions: u exact, v along the segment or part, see docs/python.md)
     float* normal;    // 3 a point
     float* distance;  // 1 a point; negative inside a solid when signed
   };

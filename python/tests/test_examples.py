@@ -1,4 +1,4 @@
-"""README's Python example runs as README shows it, and prints the closed forms it states."""
+"""The Python page's example (docs/python.md) runs as the page shows it, and prints the closed forms it states."""
 
 import re
 import subprocess

@@ -1,4 +1,4 @@
-"""The package as `cmake --install BUILD --component python --prefix P` installs it (README, "Python"):
+"""The package as `cmake --install BUILD --component python --prefix P` installs it (docs/python.md):
 importable from P alone, by this interpreter, from another folder."""
 
 import os
