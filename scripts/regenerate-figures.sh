@@ -44,4 +44,7 @@ build/bin/revolve-lidar scenes/robot_world.json --sensor examples/robot/lidar_2d
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
+# revolve beside Open3D from Python (docs/python.md), from its committed results; measuring them
+# again needs Debian 13's Open3D (bench/python/open3d_compare.py says how).
+bench/python/plot_open3d_compare.py bench/results/python/open3d_compare.json docs/open3d_comparison.png
 echo "regenerated docs/*.png; look at them before committing"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs, builds and runs the whole test suite: the Release build, the same suite under
-# AddressSanitizer and UndefinedBehaviorSanitizer, and a short libFuzzer run of every fuzz target.
+# Installs, builds and runs the whole test suite: the Release build (with the Python package and its
+# pytest suite), the same suite under AddressSanitizer and UndefinedBehaviorSanitizer (without the
+# Python package), and a short libFuzzer run of every fuzz target.
 # REVOLVE_FUZZ_SECONDS sets the fuzzing time per target (default 30; 0 skips fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,9 +12,10 @@ echo "== documentation links"
 # Every relative link and image of README.md and docs/ names a file (and heading) that exists.
 /usr/bin/python3 scripts/check-links.py
 
-echo "== Release build and tests"
+echo "== Release build and tests (the Python package's pytest suite among them)"
 # Tests and benchmark on explicitly: build/ may have been configured by scripts/main.sh without them.
-scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_DEMOS=ON
+# The Python package too, so that a missing dependency fails here instead of skipping its tests.
+scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_DEMOS=ON -DREVOLVE_BUILD_PYTHON=ON
 ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 echo "== Release build and tests: ${SECONDS} s so far"
 

@@ -28,7 +28,8 @@ io::ScanLayout Lidar::layout(std::size_t poses) const {
   return layout;
 }
 
-void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads, double* tracingSeconds) const {
+void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads, double* tracingSeconds,
+                 std::uint64_t firstPose) const {
   const std::size_t columns = azimuths_.size(), rings = elevations_.size(), perPose = columns * rings;
   const std::uint64_t total = std::uint64_t(poses.size()) * perPose;
   const float noReturn = std::numeric_limits<float>::infinity();
@@ -50,7 +51,7 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     const double length = std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
                                     double(ray.direction.z) * ray.direction.z);
     double range = double(hit->t) * length + sensor_.noiseMean;
-    if (sensor_.noiseStddev > 0) range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, pose, ring, column);
+    if (sensor_.noiseStddev > 0) range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
     if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
     if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return;  // ROS: not a return
     // The return where the measured range puts it along the beam, from the double-precision origin.

@@ -36,8 +36,11 @@ class Lidar {
   // number of poses. The result does not depend on the thread count: each beam's noise comes from
   // its own counter-based stream. An exception from `sink` stops the scan and is rethrown.
   // `tracingSeconds`, when given, receives the wall time spent tracing (the blocks' own time,
-  // which overlaps the sink's).
-  void scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads = 0, double* tracingSeconds = nullptr) const;
+  // which overlaps the sink's). `firstPose` numbers poses[0] in a larger scan traced in parts (the
+  // Python package's shards): the noise of pose i is that of pose firstPose + i, beam numbers
+  // handed to `sink` still count from 0.
+  void scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads = 0, double* tracingSeconds = nullptr,
+            std::uint64_t firstPose = 0) const;
   // The whole scan in memory (tests and the benchmark; the tool streams).
   io::ScanTable scan(std::span<const io::RobotPose> poses, int threads = 0) const;
 

@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""Simulated lidar scans of many robot poses, sharded over a Dask distributed cluster and written as
+one PCD (or CSV) byte for byte what revolve-lidar writes on the same input.
+
+    PYTHONPATH=build/python python3 examples/python/dask_lidar.py SCENE SENSOR POSES -o OUT.pcd \\
+        [--scheduler ADDRESS] [--workers N] [--shard-size K] [--pcd-data ascii|binary]
+
+The poses are split into shards of K; each shard is traced on a worker (revolve.Lidar, the code
+revolve-lidar runs, with the shard's first pose number so that every beam draws its own noise) and
+the shards come back in pose order into a revolve.ScanFile, which writes a temporary beside OUT and
+renames it into place when every pose is in: the output is whole or absent. At most two shards a
+worker are in flight, so memory does not grow with the number of poses. A worker that dies takes its
+shard with it; Dask's scheduler gives the shard to another worker (and `retries` covers a shard that
+raises), and since a shard is written only once it is back, in order, nothing is lost or written twice.
+
+Without --scheduler a LocalCluster of N worker processes runs here. With one (a scheduler started by
+`dask scheduler`, workers by `dask worker ADDRESS`), every worker must import revolve (built for its
+Python and machine) and read SCENE, the profile CSVs it names, and SENSOR at the same paths as here
+(a shared or copied folder); the poses travel with the shards.
+"""
+
+import argparse
+import os
+import time
+from collections import deque
+
+import revolve
+
+
+def scan_to_file(client, scene, sensor, poses, output, shard_size, data="ascii", threads=1, retries=3, inputs=(), trace=revolve.scan_shard):
+    """Traces `poses` (an (N, 4) array) shard by shard on `client`'s workers and writes `output`,
+    which may not be the scene, the sensor or one of `inputs`. `trace` runs a shard on a worker
+    (revolve.scan_shard: the scene and sensor loaded once per worker process)."""
+    scene, sensor, output = os.path.abspath(scene), os.path.abspath(sensor), os.path.abspath(output)
+    lidar = revolve.Lidar(sensor)  # read here too, so that a bad sensor fails before any work
+    scan_file = revolve.ScanFile(output, lidar, len(poses), data=data, inputs=[scene, sensor, *inputs])
+    shards = deque((first, min(shard_size, len(poses) - first)) for first in range(0, len(poses), shard_size))
+    in_flight = deque()
+    window = 2 * max(1, len(client.scheduler_info()["workers"]))
+
+    def submit():
+        first, count = shards.popleft()
+        future = client.submit(trace, scene, sensor, poses[first : first + count], first, threads, retries=retries, pure=False)
+        in_flight.append((first, future))
+
+    while shards and len(in_flight) < window:
+        submit()
+    while in_flight:
+        first, future = in_flight.popleft()
+        scan_file.write(first, future.result())
+        del future  # its result leaves the cluster's memory
+        if shards:
+            submit()
+    scan_file.commit()
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("scene", help="scene file (JSON, revolve-render's format)")
+    parser.add_argument("sensor", help="sensor file (JSON, revolve-lidar's --sensor)")
+    parser.add_argument("poses", help="robot poses (CSV, revolve-lidar's --poses)")
+    parser.add_argument("-o", "--output", required=True, help="scan to write: .pcd or .csv")
+    parser.add_argument("--scheduler", help="address of a running Dask scheduler (default: a LocalCluster here)")
+    parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes (default 2)")
+    parser.add_argument("--shard-size", type=int, default=64, help="poses a shard (default 64)")
+    parser.add_argument("--threads-per-worker", type=int, default=1, help="tracing threads a worker (default 1)")
+    parser.add_argument("--pcd-data", choices=("ascii", "binary"), default="ascii", help="a .pcd output's DATA")
+    args = parser.parse_args(argv)
+    if args.workers < 1 or args.shard_size < 1 or args.threads_per_worker < 1:
+        parser.error("--workers, --shard-size and --threads-per-worker take whole numbers >= 1")
+
+    from distributed import Client, LocalCluster
+
+    poses = revolve.read_poses(args.poses)
+    start = time.perf_counter()
+    if args.scheduler:
+        client, cluster = Client(args.scheduler), None
+    else:
+        cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, dashboard_address=":0")
+        client = Client(cluster)
+    try:
+        ready = time.perf_counter()
+        scan_to_file(client, args.scene, args.sensor, poses, args.output, args.shard_size, args.pcd_data, args.threads_per_worker,
+                     inputs=[args.poses])
+        done = time.perf_counter()
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    workers = "the scheduler's workers" if args.scheduler else f"{args.workers} worker{'s' if args.workers > 1 else ''}"
+    print(f"dask_lidar: {len(poses)} poses in shards of {args.shard_size} on {workers}: {done - ready:.3g} s tracing and writing "
+          f"({len(poses) / (done - ready):.4g} scans/s), {ready - start:.3g} s starting the cluster; wrote {args.output}")
+
+
+if __name__ == "__main__":
+    main()

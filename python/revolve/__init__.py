@@ -1,0 +1,43 @@
+"""revolve: surfaces of revolution ray traced exactly inside Embree, from Python.
+
+A surface of revolution is a profile of points (r, z) swept a full turn about the z axis. revolve
+traces it exactly (the MIBIT search of Baciu, Jia & Lam 2001 over the profile, Wang's ray/cone
+intersection at its leaves, splines solved as curves) instead of tessellating it.
+
+RaycastingScene     Open3D's RaycastingScene (0.19) with exact surfaces of revolution beside meshes
+Scene, Lidar        a scene file and revolve-lidar's range-finder, bit for bit the tool's scans
+ScanFile            a scan written as revolve-lidar writes it (PCD or CSV), shard by shard
+scan_shard          one shard of a scan traced from files, loaded once per process
+cylinder_clearance  revolve-clearance's robot clearance
+read_poses          a POSES.csv file as the tools read it
+tessellate          a profile swept into a triangle mesh (for triangle ray casters)
+"""
+
+from ._mesh import tessellate
+from ._pinhole import create_rays_pinhole as _create_rays_pinhole
+from ._shards import scan_shard
+from ._revolve import (
+    Lidar,
+    ProfileError,
+    RaycastingScene,
+    ScanFile,
+    Scene,
+    cylinder_clearance,
+    embree_version,
+    read_poses,
+)
+
+RaycastingScene.create_rays_pinhole = staticmethod(_create_rays_pinhole)
+
+__all__ = [
+    "Lidar",
+    "ProfileError",
+    "RaycastingScene",
+    "ScanFile",
+    "Scene",
+    "cylinder_clearance",
+    "embree_version",
+    "read_poses",
+    "scan_shard",
+    "tessellate",
+]

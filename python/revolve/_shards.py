@@ -1,0 +1,31 @@
+"""One shard of a lidar scan traced from files, for a scan spread over processes or machines (Dask,
+multiprocessing): each process builds the scene and reads the sensor once, and every shard it traces
+after reuses them."""
+
+import os
+import threading
+
+from ._revolve import Lidar, Scene
+
+_loaded = {}
+_lock = threading.Lock()
+
+
+def _scene_and_lidar(scene, sensor):
+    # Keyed by path and modification time: a file changed on disk is read again.
+    key = tuple((os.path.abspath(path), os.stat(path).st_mtime_ns) for path in (scene, sensor))
+    with _lock:
+        if key not in _loaded:
+            if len(_loaded) >= 4:
+                _loaded.clear()
+            _loaded[key] = (Scene(scene), Lidar(sensor))
+        return _loaded[key]
+
+
+def scan_shard(scene, sensor, poses, first_pose=0, threads=0):
+    """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose) with the scene and sensor files
+    loaded once per process: the arrays a ScanFile writes (ranges, points, ids) of poses
+    first_pose, first_pose + 1, ... of a scan, each with its own noise."""
+    built, lidar = _scene_and_lidar(os.fspath(scene), os.fspath(sensor))
+    scan = lidar.scan(built, poses, threads=threads, first_pose=first_pose)
+    return {key: scan[key] for key in ("ranges", "points", "ids")}

@@ -1,0 +1,102 @@
+#include "numpy_inputs.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace revolve::python {
+namespace {
+
+std::string typeName(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
+
+// An ndarray for `object`: itself, or the .numpy() of a tensor; TypeError otherwise.
+py::array asArray(py::handle object, const char* name, const std::string& expected) {
+  if (py::isinstance<py::array>(object)) return py::reinterpret_borrow<py::array>(object);
+  if (!py::isinstance<py::str>(object) && py::hasattr(object, "numpy")) {
+    py::object converted = object.attr("numpy")();
+    if (py::isinstance<py::array>(converted)) return py::reinterpret_steal<py::array>(converted.release());
+  }
+  if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
+    // Lists are fine where the values are copied anyway; numpy decides their dtype.
+    return py::array::ensure(object);
+  }
+  throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected);
+}
+
+}  // namespace
+
+std::string shapeText(const py::array& array) {
+  std::string text = "(";
+  for (py::ssize_t i = 0; i < array.ndim(); ++i) text += (i > 0 ? ", " : "") + std::to_string(array.shape(i));
+  return text + (array.ndim() == 1 ? ",)" : ")");
+}
+
+QueryArray queryArray(py::handle object, const char* name, py::ssize_t width, const char* columns) {
+  const std::string expected = "a numpy array of float32 with shape (..., " + std::to_string(width) + ")";
+  if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
+    throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected + " (numpy.asarray(" +
+                         name + ", dtype=numpy.float32))");
+  }
+  py::array array = asArray(object, name, expected);
+  if (!array.dtype().is(py::dtype::of<float>())) {
+    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
+                         "; expected float32, as Open3D's RaycastingScene (" + name + ".astype(numpy.float32))");
+  }
+  if (array.ndim() < 1 || array.shape(array.ndim() - 1) != width) {
+    throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; the last axis must hold " +
+                          std::to_string(width) + " numbers (" + columns + ")");
+  }
+  if (!(array.flags() & py::array::c_style)) {
+    throw py::value_error(std::string(name) + ": not C-contiguous; revolve reads " + name +
+                          " in place, without a copy: pass numpy.ascontiguousarray(" + name + ")");
+  }
+  QueryArray result;
+  result.leadingShape.assign(array.shape(), array.shape() + array.ndim() - 1);
+  result.count = std::size_t(array.size() / width);
+  result.data = static_cast<const float*>(array.data());
+  result.array = std::move(array);
+  return result;
+}
+
+std::string indexText(const char* name, const std::vector<py::ssize_t>& leadingShape, std::size_t flat) {
+  std::vector<std::size_t> index(leadingShape.size());
+  for (std::size_t k = leadingShape.size(); k-- > 0;) {
+    index[k] = flat % std::size_t(leadingShape[k]);
+    flat /= std::size_t(leadingShape[k]);
+  }
+  std::string text = std::string(name) + "[";
+  for (std::size_t k = 0; k < index.size(); ++k) text += (k > 0 ? ", " : "") + std::to_string(index[k]);
+  return text + "]";
+}
+
+py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_t rows, py::ssize_t columns,
+                                 py::ssize_t minRows, bool requireFinite) {
+  const std::string shape =
+      "(" + (rows >= 0 ? std::to_string(rows) : std::string("N")) + ", " + std::to_string(columns) + ")";
+  py::array array = asArray(object, name, "a numpy array of shape " + shape);
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
+                         "; expected real numbers (float or integer)");
+  }
+  if (array.ndim() != 2 || array.shape(1) != columns || (rows >= 0 && array.shape(0) != rows) ||
+      array.shape(0) < minRows) {
+    throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; expected " + shape +
+                          (minRows > 0 ? " with at least " + std::to_string(minRows) + " rows" : std::string()));
+  }
+  auto copy = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!copy) throw py::error_already_set();
+  py::array_t<double> result(std::vector<py::ssize_t>{copy.shape(0), copy.shape(1)});
+  std::copy(copy.data(), copy.data() + copy.size(), result.mutable_data());
+  const double* values = result.data();
+  for (py::ssize_t i = 0; requireFinite && i < result.size(); ++i) {
+    if (!std::isfinite(values[i])) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.9g", values[i]);
+      throw py::value_error(std::string(name) + "[" + std::to_string(i / columns) + ", " + std::to_string(i % columns) +
+                            "] = " + text + " is not finite");
+    }
+  }
+  return result;
+}
+
+}  // namespace revolve::python

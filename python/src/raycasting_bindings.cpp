@@ -1,0 +1,343 @@
+// RaycastingScene for Python: Open3D's method names, argument names, result keys, shapes and
+// dtypes (open3d.t.geometry.RaycastingScene, 0.19), numpy arrays in and out, the GIL released
+// while the queries run.
+#include "bindings.h"
+#include "numpy_inputs.h"
+#include "query_limits.h"
+#include "raycasting_scene.h"
+
+#include "io/scene_file.h"
+#include "scene/degenerate_objects.h"
+
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace revolve::python {
+namespace {
+
+using Scene = RaycastingScene;
+
+// Throws the ValueError for a refused ray or point.
+void refuse(const QueryArray& in, const char* name, std::size_t index, bool rays) {
+  const float* item = in.data + (rays ? 6 : 3) * index;
+  throw py::value_error(indexText(name, in.leadingShape, index) + ": " + (rays ? rayFault(item) : pointFault(item)));
+}
+
+Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toleranceObject) {
+  const py::array_t<double> array = copiedMatrix(pointsObject, "points", -1, 2, 0, false);
+  std::vector<Point2> points(std::size_t(array.shape(0)));
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {array.at(i, 0), array.at(i, 1)};
+  std::optional<double> tolerance;
+  if (!toleranceObject.is_none()) {
+    const double value = toleranceObject.cast<double>();
+    if (!(value > 0 && std::isfinite(value))) {
+      throw py::value_error("tolerance = " + std::string(py::repr(toleranceObject)) +
+                            ": must be a positive finite number");
+    }
+    tolerance = value;
+  }
+  try {
+    if (splineObject.is_none()) {
+      if (tolerance) {
+        throw py::value_error(
+            "tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
+            "a polyline is traced as given");
+      }
+      Profile profile(points);
+      warnAbout(profile.warnings(), "points");
+      return Shape(std::move(profile));
+    }
+    const std::string name = splineObject.cast<std::string>();
+    const std::optional<SplineKind> kind = splineKindNamed(name);
+    if (!kind) {
+      throw py::value_error("spline = \"" + name +
+                            "\": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
+    }
+    Spline curve(*kind, points);
+    warnAbout(curve.warnings(), "points");
+    if (tolerance) return Shape(Profile::fromCurve(curve, *tolerance));
+    return Shape(std::move(curve));
+  } catch (const ProfileError& error) {
+    throw ProfileError(error.rule(), error.index(), std::string("points: ") + error.what());
+  }
+}
+
+Placement placementFrom(py::handle transform, const Shape& shape) {
+  static const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  if (transform.is_none()) return placementOf(identity, shape);
+  const py::array_t<double> matrix = copiedMatrix(transform, "transform", 4, 4);
+  return placementOf(matrix.data(), shape);
+}
+
+std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle trianglesObject) {
+  const py::array_t<double> vertices = copiedMatrix(verticesObject, "vertex_positions", -1, 3);
+  py::array triangles = py::isinstance<py::array>(trianglesObject) ? py::reinterpret_borrow<py::array>(trianglesObject)
+                                                                   : py::array::ensure(trianglesObject);
+  if (!triangles || (triangles.dtype().kind() != 'i' && triangles.dtype().kind() != 'u')) {
+    throw py::type_error("triangle_indices: expected an integer array of shape (M, 3) (Open3D takes uint32)");
+  }
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3) {
+    throw py::value_error("triangle_indices: shape " + shapeText(triangles) + "; expected (M, 3)");
+  }
+  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+  if (triangles.dtype().kind() == 'u' && triangles.dtype().itemsize() == 8) {
+    // uint64 beyond int64 would wrap in the conversion: refuse it by its own value.
+    const auto raw = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+    for (py::ssize_t i = 0; i < raw.size(); ++i) {
+      if (raw.data()[i] >= std::uint64_t(vertices.shape(0))) {
+        throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
+                              "] = " + std::to_string(raw.data()[i]) + " is not a vertex: there are " +
+                              std::to_string(vertices.shape(0)));
+      }
+    }
+  }
+  std::vector<float> positions(std::size_t(vertices.size()));
+  for (py::ssize_t i = 0; i < vertices.size(); ++i) {
+    const double x = vertices.data()[i];
+    if (!(std::abs(x) <= app::kMaxWorldCoordinate)) {
+      throw py::value_error("vertex_positions[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
+                            "] = " + std::to_string(x) +
+                            " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+    }
+    positions[std::size_t(i)] = float(x);
+  }
+  std::vector<std::uint32_t> corners(std::size_t(indices.size()));
+  for (py::ssize_t i = 0; i < indices.size(); ++i) {
+    const std::int64_t k = indices.data()[i];
+    if (k < 0 || k >= vertices.shape(0)) {
+      throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " +
+                            std::to_string(k) + " is not a vertex: there are " + std::to_string(vertices.shape(0)));
+    }
+    corners[std::size_t(i)] = std::uint32_t(k);
+  }
+  if (vertices.shape(0) > py::ssize_t(std::numeric_limits<std::uint32_t>::max())) {
+    throw py::value_error("vertex_positions: more than 2^32 - 1 vertices, beyond 32-bit triangle indices");
+  }
+  return scene.addTriangles(positions, corners);
+}
+
+std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
+  const io::SceneDescription description = io::readScene(path);
+  for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
+  warnAbout(scene::degenerateObjectWarnings(description, false));
+  // Every object placed before any is added: a refused one leaves the scene as it was.
+  std::vector<std::pair<Shape, Placement>> placed;
+  for (std::size_t i = 0; i < description.objects.size(); ++i) {
+    const io::SceneObject& object = description.objects[i];
+    const io::SceneProfile& profile = description.profiles[object.profile];
+    Shape shape = profile.spline ? Shape(*profile.spline) : Shape(profile.profile);
+    const io::Matrix3d linear = io::linearPart(object.transform);
+    double rows[16] = {};
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) rows[4 * r + c] = linear[r][c];
+      rows[4 * r + 3] = object.transform.translate[r];
+    }
+    rows[15] = 1;
+    try {
+      const Placement placement = placementOf(rows, shape);
+      placed.emplace_back(std::move(shape), placement);
+    } catch (const std::invalid_argument& error) {
+      throw py::value_error(path + ": objects[" + std::to_string(i) + "]: " + error.what());
+    }
+  }
+  std::vector<std::uint32_t> ids;
+  for (auto& [shape, placement] : placed) ids.push_back(scene.addRevolution(std::move(shape), placement));
+  if (!description.quads.empty()) {
+    std::vector<float> vertices;
+    std::vector<std::uint32_t> triangles;
+    for (std::size_t q = 0; q < description.quads.size(); ++q) {
+      for (const io::Vec3d& corner : description.quads[q].corners) {
+        for (const double x : corner) vertices.push_back(float(x));
+      }
+      const auto base = std::uint32_t(4 * q);
+      for (const std::uint32_t k : {base, base + 1, base + 2, base, base + 2, base + 3}) triangles.push_back(k);
+    }
+    ids.push_back(scene.addTriangles(vertices, triangles));
+  }
+  return ids;
+}
+
+py::dict castRays(Scene& scene, py::handle rays, int threads) {
+  const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  auto t = newArray<float>(in.leadingShape);
+  auto geometry = newArray<std::uint32_t>(in.leadingShape), primitive = newArray<std::uint32_t>(in.leadingShape);
+  auto uv = newArray<float>(in.leadingShape, 2), normal = newArray<float>(in.leadingShape, 3);
+  const Scene::Hits out{t.mutable_data(), geometry.mutable_data(), primitive.mutable_data(), uv.mutable_data(),
+                        normal.mutable_data()};
+  std::optional<std::size_t> refused;
+  {
+    py::gil_scoped_release release;
+    refused = scene.castRays(in.data, in.count, out, threads);
+  }
+  if (refused) refuse(in, "rays", *refused, true);
+  py::dict result;
+  result["t_hit"] = t;
+  result["geometry_ids"] = geometry;
+  result["primitive_ids"] = primitive;
+  result["primitive_uvs"] = uv;
+  result["primitive_normals"] = normal;
+  return result;
+}
+
+py::array testOcclusions(Scene& scene, py::handle rays, double tnear, double tfar, int threads) {
+  const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  if (!(tnear >= 0 && tnear <= tfar)) {
+    throw py::value_error("tnear = " + std::to_string(tnear) + ", tfar = " + std::to_string(tfar) +
+                          ": need 0 <= tnear <= tfar");
+  }
+  auto occluded = newArray<bool>(in.leadingShape);
+  bool* out = occluded.mutable_data();
+  std::optional<std::size_t> refused;
+  {
+    py::gil_scoped_release release;
+    refused = scene.testOcclusions(in.data, in.count, float(tnear), float(tfar), out, threads);
+  }
+  if (refused) refuse(in, "rays", *refused, true);
+  return occluded;
+}
+
+py::array countIntersections(Scene& scene, py::handle rays, int threads) {
+  const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  auto counts = newArray<std::int32_t>(in.leadingShape);
+  std::int32_t* out = counts.mutable_data();
+  std::optional<std::size_t> refused;
+  {
+    py::gil_scoped_release release;
+    refused = scene.countIntersections(in.data, in.count, out, threads);
+  }
+  if (refused) refuse(in, "rays", *refused, true);
+  return counts;
+}
+
+struct ClosestArrays {
+  py::array_t<float> points, uv, normal, distance;
+  py::array_t<std::uint32_t> geometry, primitive;
+};
+
+ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, bool signedDistance, int threads) {
+  const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
+  std::string limitation = scene.distanceLimitation();
+  if (limitation.empty() && signedDistance) limitation = scene.solidLimitation();
+  if (!limitation.empty()) throw py::value_error(std::string(method) + ": " + limitation);
+  ClosestArrays a{newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape, 2),
+                  newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape),
+                  newArray<std::uint32_t>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape)};
+  const Scene::Closest out{a.points.mutable_data(), a.geometry.mutable_data(), a.primitive.mutable_data(),
+                           a.uv.mutable_data(),     a.normal.mutable_data(),   a.distance.mutable_data()};
+  std::optional<std::size_t> refused;
+  {
+    py::gil_scoped_release release;
+    refused = scene.closestPoints(in.data, in.count, out, signedDistance, threads);
+  }
+  if (refused) refuse(in, "query_points", *refused, false);
+  return a;
+}
+
+py::array occupancy(Scene& scene, py::handle queryPoints, int threads) {
+  const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
+  if (const std::string limitation = scene.solidLimitation(); !limitation.empty()) {
+    throw py::value_error("compute_occupancy: " + limitation);
+  }
+  auto inside = newArray<float>(in.leadingShape);
+  float* out = inside.mutable_data();
+  std::optional<std::size_t> refused;
+  {
+    py::gil_scoped_release release;
+    refused = scene.occupancy(in.data, in.count, out, threads);
+  }
+  if (refused) refuse(in, "query_points", *refused, false);
+  return inside;
+}
+
+void checkSamples(int nsamples) {
+  if (nsamples < 1) throw py::value_error("nsamples = " + std::to_string(nsamples) + ": must be at least 1");
+}
+
+}  // namespace
+
+void bindRaycastingScene(py::module_& m) {
+  py::class_<Scene> scene(m, "RaycastingScene",
+                          R"(Surfaces of revolution traced exactly, and triangle meshes, in one Embree scene.
+
+Open3D's RaycastingScene (open3d.t.geometry, 0.19) with its method names, arguments, result keys,
+shapes and dtypes; numpy arrays in and out. Rays are float32 arrays of shape (..., 6) (origin,
+direction), query points float32 (..., 3), both C-contiguous (read in place). Geometry ids count
+0, 1, ... in the order geometries are added.)");
+  scene.def(py::init<>());
+  scene.attr("INVALID_ID") = py::int_(Scene::kInvalidId);
+  scene.def(
+      "add_revolution",
+      [](Scene& s, py::handle points, py::handle transform, py::handle spline, py::handle tolerance) {
+        Shape shape = shapeOf(points, spline, tolerance);
+        const Placement placement = placementFrom(transform, shape);
+        return s.addRevolution(std::move(shape), placement);
+      },
+      py::arg("points"), py::arg("transform") = py::none(), py::arg("spline") = py::none(),
+      py::arg("tolerance") = py::none(),
+      R"(Adds the surface swept by a profile about the z axis; returns its geometry id.
+
+points: (N, 2) array of (r, z), r >= 0, a polyline, or a spline's points with `spline`.
+transform: 4x4 affine object-to-world matrix (default: the identity).
+spline: "linear", "quadratic", "bezier", "catmull-rom" or "natural": the curve is traced exactly,
+    or, with `tolerance`, as the fewest polyline points within that distance of it.
+Raises ProfileError (a ValueError) naming the point and the rule for a bad profile.)");
+  scene.def("add_triangles", &addTriangles, py::arg("vertex_positions"), py::arg("triangle_indices"),
+            "Adds a triangle mesh ((N, 3) vertices, (M, 3) vertex indices); returns its geometry id.");
+  scene.def("load", &load, py::arg("path"),
+            "Adds a scene file's objects (each a geometry, in order) and its quads (one mesh); returns their ids.");
+  scene.def("cast_rays", &castRays, py::arg("rays"), py::arg("nthreads") = 0,
+            "The first hit of each ray: dict of t_hit, geometry_ids, primitive_ids, primitive_uvs, primitive_normals.");
+  scene.def("test_occlusions", &testOcclusions, py::arg("rays"), py::arg("tnear") = 0.0,
+            py::arg("tfar") = std::numeric_limits<double>::infinity(), py::arg("nthreads") = 0,
+            "Whether each ray hits anything with tnear <= t <= tfar (bool array).");
+  scene.def("count_intersections", &countIntersections, py::arg("rays"), py::arg("nthreads") = 0,
+            "The number of surface crossings along each ray (t >= 0), int32 array.");
+  scene.def(
+      "compute_closest_points",
+      [](Scene& s, py::handle points, int threads) {
+        const ClosestArrays a = closest(s, "compute_closest_points", points, false, threads);
+        py::dict result;
+        result["points"] = a.points;
+        result["geometry_ids"] = a.geometry;
+        result["primitive_ids"] = a.primitive;
+        result["primitive_uvs"] = a.uv;
+        result["primitive_normals"] = a.normal;
+        return result;
+      },
+      py::arg("query_points"), py::arg("nthreads") = 0,
+      "Exact closest surface points: dict of points, geometry_ids, primitive_ids, primitive_uvs, primitive_normals.");
+  scene.def(
+      "compute_distance",
+      [](Scene& s, py::handle points, int threads) {
+        return closest(s, "compute_distance", points, false, threads).distance;
+      },
+      py::arg("query_points"), py::arg("nthreads") = 0, "Exact distance to the nearest surface (float32).");
+  scene.def(
+      "compute_signed_distance",
+      [](Scene& s, py::handle points, int threads, int nsamples) {
+        checkSamples(nsamples);
+        return closest(s, "compute_signed_distance", points, true, threads).distance;
+      },
+      py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
+      "Exact distance, negative inside a closed profile's solid (decided from the profile; nsamples, Open3D's ray "
+      "vote, is not needed).");
+  scene.def(
+      "compute_occupancy",
+      [](Scene& s, py::handle points, int threads, int nsamples) {
+        checkSamples(nsamples);
+        return occupancy(s, points, threads);
+      },
+      py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
+      "1 inside a closed profile's solid, 0 outside (float32), decided from the profile.");
+  scene.def("geometry_count", &Scene::geometryCount, "The number of geometries added.");
+  scene.def("memory_bytes", &Scene::memoryBytes,
+            "Heap bytes the scene holds: revolve's shapes, the meshes' arrays, and Embree's allocations for the scene "
+            "(its BVHs; the device's own set-up included).");
+}
+
+}  // namespace revolve::python

@@ -1,0 +1,376 @@
+// The robot tools' code for Python: a scene file built as the tools build it (Scene), the laser
+// range-finder of revolve-lidar (Lidar) and its scan files (ScanFile), and revolve-clearance's
+// cylinder clearance. The same library code the tools run (demo/robot, demo/io, demo/scene), so
+// that the answers are theirs bit for bit.
+#include "bindings.h"
+#include "numpy_inputs.h"
+
+#include "common/ray_limits.h"
+#include "io/output_set.h"
+#include "io/poses_file.h"
+#include "io/scan_files.h"
+#include "io/scene_file.h"
+#include "io/sensor_file.h"
+#include "robot/clearance_map.h"
+#include "robot/lidar.h"
+#include "scene/degenerate_objects.h"
+#include "scene/embree_scene.h"
+
+#include <pybind11/stl.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace revolve::python {
+namespace {
+
+std::string pathOf(py::handle path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
+
+// The build settings, checked before a scene file is read.
+void checkSettings(const std::string& geometry, std::uint32_t slices) {
+  if (geometry != "mibit" && geometry != "mesh") {
+    throw py::value_error("geometry = \"" + geometry +
+                          "\": expected \"mibit\" (exact) or \"mesh\" (tessellated, as --geometry mesh)");
+  }
+  if (slices < 3 || slices > (1u << 16))
+    throw py::value_error("slices = " + std::to_string(slices) + ": must lie in [3, 65536]");
+}
+
+// A scene file as revolve-lidar (--geometry mibit or mesh) and revolve-clearance build it.
+struct ToolScene {
+  std::string path;
+  io::SceneDescription description;
+  std::unique_ptr<scene::EmbreeScene> built;
+  std::mutex clearanceMutex;
+  std::map<double, std::unique_ptr<robot::ClearanceMap>> clearanceMaps;  // by ground height
+
+  ToolScene(const std::string& file, const std::string& geometry, std::uint32_t slices)
+      : path(file), description((checkSettings(geometry, slices), io::readScene(file))) {
+    for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
+    warnAbout(scene::degenerateObjectWarnings(description, false));
+    scene::BuildSettings settings;
+    settings.mesh = geometry == "mesh";
+    settings.slices = slices;
+    built = std::make_unique<scene::EmbreeScene>(description, settings);
+  }
+
+  const robot::ClearanceMap& clearanceMap(double ground) {
+    std::lock_guard lock(clearanceMutex);
+    std::unique_ptr<robot::ClearanceMap>& map = clearanceMaps[ground];
+    if (!map) map = std::make_unique<robot::ClearanceMap>(description, ground);
+    return *map;
+  }
+};
+
+std::shared_ptr<ToolScene> sceneOf(py::handle scene) {
+  if (py::isinstance<ToolScene>(scene)) return scene.cast<std::shared_ptr<ToolScene>>();
+  return std::make_shared<ToolScene>(pathOf(scene), "mibit", 64);
+}
+
+// Poses from a POSES.csv path (the tools' reader) or an (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw]
+// array, checked by the reader's rules.
+std::vector<io::RobotPose> posesOf(py::handle poses) {
+  if (py::isinstance<py::str>(poses) || py::hasattr(poses, "__fspath__")) return io::readPosesCsv(pathOf(poses));
+  py::array array =
+      py::isinstance<py::array>(poses) ? py::reinterpret_borrow<py::array>(poses) : py::array::ensure(poses);
+  const py::ssize_t columns = array && array.ndim() == 2 ? array.shape(1) : 0;
+  if (columns != 3 && columns != 4) {
+    throw py::value_error("poses: shape " + (array ? shapeText(array) : std::string("?")) +
+                          "; expected (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv path");
+  }
+  const py::array_t<double> values = copiedMatrix(array, "poses", -1, columns, 1);
+  std::vector<io::RobotPose> result(std::size_t(values.shape(0)));
+  const char* names[4] = {"x", "y", columns == 4 ? "z" : "yaw", "yaw"};
+  for (std::size_t i = 0; i < result.size(); ++i) {
+    for (py::ssize_t c = 0; c + 1 < columns; ++c) {  // the positions; yaw may be any finite angle
+      if (!(std::abs(values.at(i, c)) <= app::kMaxWorldCoordinate)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", values.at(i, c));
+        throw py::value_error("poses[" + std::to_string(i) + ", " + std::to_string(c) + "]: " + names[c] + " = " +
+                              text + " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      }
+    }
+    io::RobotPose& p = result[i];
+    p.x = values.at(i, 0), p.y = values.at(i, 1);
+    p.z = columns == 4 ? values.at(i, 2) : 0.0;
+    p.yaw = values.at(i, columns - 1);
+  }
+  return result;
+}
+
+py::array_t<double> posesArray(const std::vector<io::RobotPose>& poses) {
+  py::array_t<double> array(std::vector<py::ssize_t>{py::ssize_t(poses.size()), 4});
+  double* out = array.mutable_data();
+  for (const io::RobotPose& p : poses) *out++ = p.x, *out++ = p.y, *out++ = p.z, *out++ = p.yaw;
+  return array;
+}
+
+struct PySensor {
+  io::SensorDescription sensor;
+};
+
+io::SensorDescription sensorOf(py::handle sensor) {
+  if (py::isinstance<py::dict>(sensor)) {
+    const std::string text = py::str(py::module_::import("json").attr("dumps")(sensor));
+    return io::parseSensor(text, "sensor");
+  }
+  return io::readSensor(pathOf(sensor));
+}
+
+// A scan's returns in numpy arrays shaped (poses, rings, azimuths), written block by block.
+struct ScanArrays {
+  py::array_t<float> ranges, points;
+  py::array_t<std::int32_t> ids;
+  py::array_t<std::uint16_t> rings;
+};
+
+ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimuths) {
+  const std::vector<py::ssize_t> shape{py::ssize_t(poses), py::ssize_t(rings), py::ssize_t(azimuths)};
+  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<std::int32_t>(shape),
+          newArray<std::uint16_t>(shape)};
+}
+
+py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, int threads,
+              std::uint64_t firstPose) {
+  const std::vector<io::RobotPose> poses = posesOf(posesObject);
+  const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
+  if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
+  const robot::Lidar lidar(*scene->built, self.sensor);
+  const io::ScanLayout layout = lidar.layout(poses.size());
+  const std::size_t rings = layout.rings(), azimuths = layout.azimuths.size();
+  ScanArrays a = newScanArrays(poses.size(), rings, azimuths);
+  float* ranges = a.ranges.mutable_data();
+  float* points = a.points.mutable_data();
+  std::int32_t* ids = a.ids.mutable_data();
+  std::uint16_t* ringOf = a.rings.mutable_data();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  {
+    py::gil_scoped_release release;
+    lidar.scan(
+        poses,
+        [&](std::uint64_t first, std::span<const io::BeamReturn> beams) {
+          for (std::size_t i = 0; i < beams.size(); ++i) {
+            const std::uint64_t b = first + i;
+            const io::BeamReturn& beam = beams[i];
+            const bool hit = !std::isinf(beam.range);
+            ranges[b] = beam.range;
+            points[3 * b] = hit ? beam.x : nan;
+            points[3 * b + 1] = hit ? beam.y : nan;
+            points[3 * b + 2] = hit ? beam.z : nan;
+            ids[b] = beam.object;
+            ringOf[b] = std::uint16_t(b / azimuths % rings);
+          }
+        },
+        threads, nullptr, firstPose);
+  }
+  py::dict result;
+  result["points"] = a.points;
+  result["ranges"] = a.ranges;
+  result["rings"] = a.rings;
+  result["ids"] = a.ids;
+  return result;
+}
+
+// One scan file written in pose order, shard by shard, through a temporary renamed into place on
+// commit() (io/output_set.h): whole or absent.
+struct ScanFile {
+  io::OutputSet outputs;
+  std::string path;
+  io::ScanLayout layout;
+  std::optional<io::ScanWriter> writer;
+  std::uint64_t nextPose = 0;
+  bool committed = false;
+
+  ScanFile(const std::string& file, const PySensor& sensor, std::uint64_t poses, const std::string& data,
+           const std::vector<std::string>& inputs)
+      : path(file) {
+    if (data != "ascii" && data != "binary")
+      throw py::value_error("data = \"" + data + "\": expected \"ascii\" or \"binary\"");
+    const io::ScanFormat format = io::scanFormatFor(path);
+    if (data == "binary" && format != io::ScanFormat::pcd) {
+      throw py::value_error(path + ": data=\"binary\" applies to .pcd outputs, and this one is a CSV table");
+    }
+    for (const double a : io::fanAngles(sensor.sensor.horizontal)) layout.azimuths.push_back(a);
+    layout.elevations = sensor.sensor.elevations;
+    layout.poses = poses;
+    if (poses == 0 || layout.beamCount() > io::kMaxScanBeams) {
+      throw py::value_error("poses = " + std::to_string(poses) + " x " + std::to_string(layout.beamsPerPose()) +
+                            " beams: a scan holds 1 to 2^31 - 1 beams (PCD's point count, as PCL indexes it)");
+    }
+    for (const std::string& input : inputs) outputs.addInput("an input", input);
+    outputs.add("", path);
+    writer.emplace(outputs.stream(path), format, data == "binary" ? io::PcdData::binary : io::PcdData::ascii, layout);
+  }
+
+  void write(std::uint64_t firstPose, const py::dict& scan) {
+    if (committed) throw py::value_error(path + ": already committed");
+    if (firstPose != nextPose) {
+      throw py::value_error(path + ": poses are written in order: expected pose " + std::to_string(nextPose) +
+                            ", got first_pose = " + std::to_string(firstPose));
+    }
+    const auto ranges = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["ranges"]);
+    const auto points = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["points"]);
+    const auto ids = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(scan["ids"]);
+    const std::size_t perPose = layout.beamsPerPose();
+    if (!ranges || !points || !ids || ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
+        points.size() != 3 * ranges.size() || ids.size() != ranges.size()) {
+      throw py::value_error(path + ": a scan dict of Lidar.scan for this sensor is expected (ranges (P, " +
+                            std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
+                            "), points, ids)");
+    }
+    const std::uint64_t poses = std::uint64_t(ranges.shape(0));
+    if (firstPose + poses > layout.poses) {
+      throw py::value_error(path + ": poses " + std::to_string(firstPose) + " to " +
+                            std::to_string(firstPose + poses - 1) + " lie beyond the file's " +
+                            std::to_string(layout.poses));
+    }
+    std::vector<io::BeamReturn> beams(std::size_t(ranges.size()));
+    for (std::size_t b = 0; b < beams.size(); ++b) {
+      beams[b] = {ranges.data()[b], points.data()[3 * b], points.data()[3 * b + 1], points.data()[3 * b + 2],
+                  ids.data()[b]};
+    }
+    writer->write(firstPose * perPose, beams);
+    nextPose += poses;
+  }
+
+  void commit() {
+    if (committed) return;
+    if (nextPose != layout.poses) {
+      throw py::value_error(path + ": " + std::to_string(nextPose) + " of " + std::to_string(layout.poses) +
+                            " poses written; a scan file is committed whole");
+    }
+    outputs.commit();
+    committed = true;
+  }
+};
+
+py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, double radius, double zMin, double zMax,
+                           std::optional<double> ground, int threads) {
+  if (!(radius > 0 && std::isfinite(radius)))
+    throw py::value_error("radius = " + std::to_string(radius) + ": must be positive and finite");
+  if (!(std::isfinite(zMin) && std::isfinite(zMax) && zMin < zMax)) {
+    throw py::value_error("z_min = " + std::to_string(zMin) + ", z_max = " + std::to_string(zMax) +
+                          ": need finite z_min < z_max");
+  }
+  if (ground && !std::isfinite(*ground)) throw py::value_error("ground: must be a finite height (or None)");
+  if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
+  const std::vector<io::RobotPose> poses = posesOf(posesObject);
+  const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
+  const robot::ClearanceMap& map = scene->clearanceMap(ground.value_or(-INFINITY));
+  std::vector<robot::SceneClearance> results(poses.size());
+  {
+    py::gil_scoped_release release;
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t i) {
+        const io::RobotPose& p = poses[i];
+        results[i] = map.query({p.x, p.y, p.z + zMin, p.z + zMax, radius});
+      });
+    });
+  }
+  const py::ssize_t n = py::ssize_t(poses.size());
+  py::array_t<double> clearance(n), point(std::vector<py::ssize_t>{n, 3});
+  py::array_t<bool> collides(n), exact(n);
+  py::array_t<std::int64_t> object(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const robot::SceneClearance& r = results[std::size_t(i)];
+    clearance.mutable_at(i) = r.clearance;
+    collides.mutable_at(i) = r.collides;
+    object.mutable_at(i) = r.object;
+    exact.mutable_at(i) = r.exact;
+    for (int k = 0; k < 3; ++k)
+      point.mutable_at(i, k) = r.object >= 0 ? r.point[k] : std::numeric_limits<double>::quiet_NaN();
+  }
+  py::dict result;
+  result["clearance"] = clearance;
+  result["collides"] = collides;
+  result["object"] = object;
+  result["point"] = point;
+  result["exact"] = exact;
+  return result;
+}
+
+}  // namespace
+
+void bindRobot(py::module_& m) {
+  py::class_<ToolScene, std::shared_ptr<ToolScene>>(
+      m, "Scene", R"(A scene file (JSON, revolve-render's format) built as revolve-lidar and revolve-clearance build it.
+
+geometry: "mibit" traces every surface of revolution exactly; "mesh" tessellates each into `slices`
+azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
+      .def(py::init([](py::handle path, const std::string& geometry, std::uint32_t slices) {
+             return std::make_shared<ToolScene>(pathOf(path), geometry, slices);
+           }),
+           py::arg("path"), py::arg("geometry") = "mibit", py::arg("slices") = 64)
+      .def_property_readonly("path", [](const ToolScene& s) { return s.path; })
+      .def_property_readonly("object_count", [](const ToolScene& s) { return s.description.objects.size(); })
+      .def_property_readonly("quad_count", [](const ToolScene& s) { return s.description.quads.size(); });
+
+  py::class_<PySensor>(m, "Lidar",
+                       R"(The laser range-finder of revolve-lidar: a sensor file's path, or its JSON as a dict.
+
+scan(scene, poses) traces every beam from every pose with revolve-lidar's conventions (ROS
+LaserScan: no return is inf, never clamped; seeded per-beam noise) and returns a dict of arrays
+shaped (poses, rings, azimuths): ranges (float32, inf for no return), points (float32, (..., 3),
+world frame, nan for no return), rings (uint16) and ids (int32: the scene's object index, quads
+after the objects, -1 for no return), bit for bit revolve-lidar's.)")
+      .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
+      .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = 0, py::arg("first_pose") = 0,
+           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv "
+           "path; "
+           "first_pose: the number of poses[0] in a scan traced in parts (its noise is that pose's).")
+      .def_property_readonly("azimuths",
+                             [](const PySensor& s) {
+                               const std::vector<double> a = io::fanAngles(s.sensor.horizontal);
+                               return py::array_t<double>(py::ssize_t(a.size()), a.data());
+                             })
+      .def_property_readonly("elevations",
+                             [](const PySensor& s) {
+                               return py::array_t<double>(py::ssize_t(s.sensor.elevations.size()),
+                                                          s.sensor.elevations.data());
+                             })
+      .def_property_readonly("beams_per_pose", [](const PySensor& s) {
+        return std::size_t(s.sensor.horizontal.samples) * s.sensor.elevations.size();
+      });
+
+  py::class_<ScanFile>(m, "ScanFile",
+                       R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.
+
+The file goes to a temporary beside it, renamed into place by commit() once every pose is written;
+dropped (or a failed run) it leaves nothing. `inputs` name files it must not overwrite.)")
+      .def(py::init([](py::handle path, const PySensor& sensor, std::uint64_t poses, const std::string& data,
+                       const std::vector<py::object>& inputs) {
+             std::vector<std::string> paths;
+             for (const py::object& input : inputs) paths.push_back(pathOf(input));
+             return std::make_unique<ScanFile>(pathOf(path), sensor, poses, data, paths);
+           }),
+           py::arg("path"), py::arg("lidar"), py::arg("poses"), py::arg("data") = "ascii",
+           py::arg("inputs") = std::vector<py::object>{})
+      .def("write", &ScanFile::write, py::arg("first_pose"), py::arg("scan"))
+      .def("commit", &ScanFile::commit)
+      .def_property_readonly("poses_written", [](const ScanFile& f) { return f.nextPose; });
+
+  m.def("cylinder_clearance", &cylinderClearance, py::arg("scene"), py::arg("poses"), py::arg("radius"),
+        py::arg("z_min"), py::arg("z_max"), py::arg("ground") = py::none(), py::arg("threads") = 0,
+        R"(revolve-clearance's clearance of a vertical-cylinder robot at each pose.
+
+The robot is a solid cylinder of `radius` from z + z_min to z + z_max at (x, y) of each pose. Returns
+a dict: clearance (float64, signed: negative when an obstacle's surface enters the robot; inf with
+no obstacle), collides (bool), object (int64, -1 for none), point (float64 (N, 3), a point of the
+nearest obstacle's surface), exact (bool: false where the clearance is a lower bound).)");
+  m.def(
+      "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathOf(path))); }, py::arg("path"),
+      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
+}
+
+}  // namespace revolve::python
