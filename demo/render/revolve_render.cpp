@@ -235,7 +235,7 @@ void run(const Options& options) {
   render::Image image = result.image;
   const float scale = float(std::exp2(options.exposure));
   for (float& value : image.pixels) value *= scale;
-  render::writeImage(outputs.temporary(output), output, image);
+  render::writeImage(outputs.stream(output), output, image);
   if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size(), curves);
   outputs.commit();
 }
