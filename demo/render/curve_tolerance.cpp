@@ -1,9 +1,12 @@
 #include "curve_tolerance.h"
 
+#include "common/tolerance_option.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace revolve::render {
@@ -25,18 +28,9 @@ Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
 }  // namespace
 
 CurveTolerance parseCurveTolerance(const std::string& text) {
-  if (text == "pixel") return {true, 0};
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !(value > 0 && value < HUGE_VAL)) {
-    throw std::runtime_error("--tolerance \"" + text.substr(0, 40) + "\": expected \"pixel\" or a number > 0 (in each profile's units)");
-  }
-  return {false, value};
+  const std::optional<app::ToleranceOption> option = app::toleranceOption(text, true);
+  if (!option) throw std::runtime_error("--tolerance: " + app::toleranceRefusal(text, true));
+  return {option->pixel, option->value};
 }
 
 std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& choice, int height) {

@@ -16,7 +16,8 @@ struct CurveTolerance {
   double value = 0;    // else: this tolerance, in each profile's own units (> 0)
 };
 
-// "pixel" or a number > 0; throws std::runtime_error naming the option otherwise.
+// "pixel" or a finite number > 0 (common/tolerance_option.h, shared with revolve-trace); throws
+// std::runtime_error naming the option otherwise.
 CurveTolerance parseCurveTolerance(const std::string& text);
 
 struct CurvePolyline {

@@ -57,7 +57,7 @@ class ProfileError : public std::invalid_argument {
     outOfRange,       // a coordinate beyond kMaxCoordinate, or an extent below kMinExtent
     segmentTooShort,  // a segment shorter than kMinSegmentFraction of the profile's extent
     badPointCount,    // a spline whose point count its kind cannot take (2n + 1, 3n + 1)
-    crossesAxis,      // a spline whose curve reaches r < 0 between the points it passes through
+    crossesAxis,      // a spline whose curve reaches r <= 0 between the points it passes through
   };
   ProfileError(Rule rule, std::size_t index, const std::string& message)
       : std::invalid_argument(message), rule_(rule), index_(index) {}
@@ -170,8 +170,9 @@ class Spline {
   // a point count the kind cannot take (linear, catmull-rom and natural need at least 2 points,
   // quadratic 2n + 1 >= 3, bezier 3n + 1 >= 4); a non-finite coordinate; a coordinate or extent
   // outside Profile's range; r < 0 at a point the curve passes through (Bezier control points off
-  // the curve may have r < 0); a curve that reaches r < 0 anywhere (crossesAxis: it may touch the
-  // axis only at a point it passes through); two equal consecutive points of catmull-rom or
+  // the curve may have r < 0); a curve that reaches r < 0 anywhere, or r = 0 between the points
+  // it passes through (crossesAxis: it may touch the axis only at a point it passes through,
+  // where a part of the curve ends exactly on it); two equal consecutive points of catmull-rom or
   // natural (their chord has no length to parametrise); a piece with all its points equal, or
   // shorter than Profile::kMinSegmentFraction of the extent; a curve that crosses or touches itself
   // (checked conservatively on the pieces' control hulls: see below); more than kMaxPoints points.
