@@ -1,5 +1,6 @@
 #include "io/scene_file.h"
 
+#include "io/curve_polyline.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
 
@@ -170,12 +171,13 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
   std::optional<Profile> polyline;
   try {
-    polyline.emplace(Profile::fromCurve(*spline, tolerance > 0 ? tolerance : SceneProfile::kDrawingFraction * size));
-  } catch (const std::invalid_argument& error) {  // ProfileError too: the polyline crosses itself
+    // A tolerance the user gave is held to the rule every tool applies (io/curve_polyline.h).
+    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance) : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
+  } catch (const std::invalid_argument& error) {
     in.fail(tolerance > 0 ? tolerancePath : child(path, "spline"), error.what());
   }
-  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance};
-  return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::move(spline), 0};
+  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance, std::move(spline)};
+  return {name, std::move(*polyline), creaseDegrees, {}, source.file, spline, 0, spline};
 }
 
 SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json& json, const std::string& path) {

@@ -126,6 +126,17 @@ float normaliseDirection(RTCRay& ray) noexcept {
 
 }  // namespace
 
+namespace {
+
+// A polyline made from a curve shades with the curve's own normals (a coarse polyline then looks
+// like the curve); any other profile with normals interpolated between its vertices.
+ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
+  if (source.curve && !source.profile.curveParameters().empty()) return ShadingNormals(source.profile, *source.curve);
+  return ShadingNormals(source.profile, source.creaseDegrees);
+}
+
+}  // namespace
+
 struct EmbreeScene::Prototype {
   Profile profile;
   ShadingNormals normals;
@@ -139,7 +150,7 @@ struct EmbreeScene::Prototype {
   app::Scene scene;
 
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
-      : profile(source.profile), normals(source.profile, source.creaseDegrees), scene(app::newScene(device)) {
+      : profile(source.profile), normals(shadingNormalsOf(source)), scene(app::newScene(device)) {
     if (settings.mesh) {
       slices = settings.slices;
       mesh = newTessellatedGeometry(device, profile, slices);

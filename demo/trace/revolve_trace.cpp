@@ -7,6 +7,7 @@
 #include "common/embree_rays.h"
 #include "common/memory_check.h"
 #include "common/ray_limits.h"
+#include "io/curve_polyline.h"
 #include "io/text_files.h"
 
 #include <revolve/revolve.h>
@@ -66,7 +67,8 @@ LoadedProfile loadProfile(const Options& options) {
     Spline spline(kind, file.points);
     double size = 0;
     for (const Point2& p : spline.bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
-    Profile polyline = Profile::fromCurve(spline, options.tolerance > 0 ? options.tolerance : 1e-5 * size);
+    // A tolerance the user gave is held to the scene file's rule (io/curve_polyline.h).
+    Profile polyline = options.tolerance > 0 ? io::curvePolyline(spline, options.tolerance) : Profile::fromCurve(spline, 1e-5 * size);
     if (options.tolerance > 0) return {std::move(polyline), std::nullopt};
     return {std::move(polyline), std::move(spline)};
   } catch (const ProfileError& error) {

@@ -620,6 +620,10 @@ const std::vector<BadInput> kBadInputs = {
     // Points 1 and 2 (lines 3 and 4) of a natural spline are equal: the chord between has no length.
     {.name = "NaturalSplineRepeatedPoint", .profile = "r,z\n0,0\n1,0\n1,0\n0,1\n", .args = {"--spline", "natural"},
      .message = {"@/p.csv:4: ", "repeats point 1"}},
+    // One Bezier piece from the axis to the axis, reaching r = 0.375: within 2 its polyline is the
+    // chord on the axis, which nothing hits.
+    {.name = "ToleranceCollapsingTheCurve", .profile = "r,z\n0,0\n0.5,0.2\n0.5,0.8\n0,1\n", .args = {"--spline", "bezier", "--tolerance", "2"},
+     .message = {"--tolerance: polyline tolerance 2 collapses the bezier spline onto the axis", "r = 0.375"}},
     {.name = "ToleranceBelowTheCurvesResolution", .args = {"--spline", "catmull-rom", "--tolerance", "1e-30"},
      .message = {"--tolerance", "2^-40"}},
     {.name = "KajiyaForACurve", .args = {"--spline", "natural", "--method", "kajiya"},

@@ -128,6 +128,12 @@ inline std::vector<BadCase> badCases() {
        "profiles.ball.tolerance: applies to a curved \"spline\""},
       {"ToleranceNotPositive", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "natural", "tolerance": 0, )"), {},
        "profiles.ball.tolerance: 0 is out of range: a tolerance is > 0"},
+      // The ball as one Bezier piece from the axis to the axis: within 10 its polyline is the chord on
+      // the axis, a surface of no area; the same rule as --tolerance's below.
+      {"ToleranceCollapsesTheCurve", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", "tolerance": 10, )"), {},
+       "scene.json: profiles.ball.tolerance: polyline tolerance 10 collapses the bezier spline onto the axis: every point of its "
+       "polyline has r = 0, a surface of no area that nothing hits, where the curve reaches r = 0.375; a tolerance below that keeps "
+       "the polyline off the axis"},
       {"ToleranceBelowResolution", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "natural", "tolerance": 1e-30, )"), {},
        "profiles.ball.tolerance: polyline tolerance 1e-30 is below 2^-40"},
       {"BezierPointCount", replaced(replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"), "[0, 1]]", "[0.2, 1], [0, 1]]"), {},
@@ -152,8 +158,13 @@ inline std::vector<BadCase> badCases() {
       {"QuadraticTouchingTheAxis", replaced(kScene, R"("ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]})",
                                             R"("ball": {"spline": "quadratic", "points": [[0, 0], [0.5, 0], [1, 0], [-1, 0.5], [1, 1], [0.5, 1], [0, 1]]})"),
        {}, "scene.json: profiles.ball.points[2]: the piece from spline point 2 (r = 1, z = 0) to spline point 4 (r = 1, z = 1) touches the axis"},
+      {"ToleranceCollapsesTheCurveFromTheCommandLine", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"),
+       {"--tolerance", "10"},
+       "--tolerance: profiles.ball: polyline tolerance 10 collapses the bezier spline onto the axis: every point of its polyline "
+       "has r = 0",
+       kBottleCsv, true},
       {"ToleranceBelowTheCurvesResolution", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"), {"--tolerance", "1e-30"},
-       R"(--tolerance: profile "ball": polyline tolerance 1e-30 is below 2^-40)", kBottleCsv, true},
+       R"(--tolerance: profiles.ball: polyline tolerance 1e-30 is below 2^-40)", kBottleCsv, true},
       {"UnknownImageExtension", kScene, {"-o", "out.jpg"}, R"(out.jpg: unsupported image extension ".jpg")", kBottleCsv, true},
       {"UnwritableStats", kScene, {"--stats", "no/such/stats.json"}, "no/such/stats.json: cannot create a file", kBottleCsv, true},
       // Embree's linear cone curve: a flat step between two cones, and a scaled instance.
