@@ -225,8 +225,10 @@ TEST(FullDisk, EveryOutputOfEveryToolOnAFullFileSystemFailsInOneLineAndLeavesItA
       {kClearance, "revolve-clearance", "clearance.csv",
        {"scene.json", "--robot", "0.3,0,1.5", "--poses", "poses.csv", "-o", "full/clearance.csv"}},
   };
+#ifdef REVOLVE_LIDAR_BENCH_PATH
   cases.push_back({REVOLVE_LIDAR_BENCH_PATH, "revolve-lidar-bench", "bench.json",
                    {"scene.json", "--poses", "poses.csv", "--out", "full/bench.json", "--repeats", "1"}});
+#endif
 #ifdef REVOLVE_BENCH_PATH
   for (const char* option : {"--json", "--csv"}) {
     const std::string output = option == std::string("--json") ? "bench.json" : "bench.csv";
