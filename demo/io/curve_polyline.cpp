@@ -25,8 +25,9 @@ Profile curvePolyline(const Spline& curve, double tolerance) {
   if (!onTheAxis(polyline)) return polyline;
   // The curve's largest radius lies at an end of one of its parts monotone in r: the points of a
   // shape's profile. Built only here, to say how far the tolerance must come down.
+  const Shape shape(curve);  // named: the points belong to it
   double largest = 0;
-  for (const Point2& p : Shape(curve).profile().points()) largest = std::max(largest, p.r);
+  for (const Point2& p : shape.profile().points()) largest = std::max(largest, p.r);
   if (largest == 0) return polyline;  // the curve lies on the axis itself: its own (warned-of) business
   throw std::invalid_argument("polyline tolerance " + shortest(tolerance) + " collapses the " + splineKindName(curve.kind()) +
                               " spline onto the axis: every point of its polyline has r = 0, a surface of no area that "
