@@ -87,7 +87,7 @@ void writeSideBySide(const std::string& path, const render::Image& reference, co
   }
   io::OutputSet outputs;
   outputs.add("the side-by-side figure", path);
-  render::writeImage(outputs.temporary(path), path, combined);
+  render::writeImage(outputs.stream(path), path, combined);
   outputs.commit();
 }
 

@@ -185,7 +185,7 @@ PovComparison runPovComparison(const std::string& povray, const PovCompareSettin
   result.povrayImage = (std::filesystem::path(settings.outDirectory) / request.image).string();
   io::OutputSet outputs;
   outputs.add("revolve's image", result.revolveImage);
-  render::writeImage(outputs.temporary(result.revolveImage), result.revolveImage, last.revolve.image);
+  render::writeImage(outputs.stream(result.revolveImage), result.revolveImage, last.revolve.image);
   outputs.commit();
   writeSideBySide(result.figure, last.revolve.image, last.povray.image, result.difference.exposure, "revolve", "POV-Ray 3.7");
   return result;

@@ -6,13 +6,21 @@
 //   segment above (and at a top rim, nothing);
 // - tnear <= t <= tfar is inclusive: a ray whose hit lies exactly at tfar or tnear hits, whether it
 //   enters or leaves the solid there;
-// - a tangent touch (a double root, discriminant exactly 0) is a hit;
+// - a tangent touch (a double root, discriminant exactly 0) is a hit, whatever the sign of the
+//   quadratic's leading coefficient A (checked on the quadratic itself, below: through the kernel,
+//   A < 0 with a double root occurs only at an apex, A = 0 only along a generator);
 // - u lies in [0, 1): a hit just below the +x axis, whose exact u rounds to 1, reports u = 0;
-// - a ray through an apex touches it, however nearly level with the apex it runs.
+// - a ray through an apex touches it, however nearly level with the apex it runs, and a ray
+//   steeper than the cone enters or leaves its solid there;
+// - a ray parallel to a generator (A = 0) crosses the cone once, or, in the generator's tangent
+//   plane, never.
+// Spline shapes run the same rules through the curve leaf: straight parts (Wang's kernel) and, in
+// horizontal planes at the parts' end heights, curved ones.
 // Profiles and rays use small dyadic numbers (radii 1, 0.75, 0.5; heights multiples of 1/8;
 // directions along the axes, or with the hit placed where the kernel's arithmetic is exact, as each
 // case says), so that each expected t is a float met exactly: a rule changed at its boundary then
 // fails here, deterministically, rather than within rounding somewhere in a random test.
+#include "kernel/bracketed_roots.h"
 #include "util/azimuth.h"
 #include "util/simd.h"
 
@@ -55,7 +63,7 @@ struct Expected {
   float u;
 };
 
-enum class Rule { halfOpenHeight, inclusiveRange, tangentTouch, uWrap, apexTouch };
+enum class Rule { halfOpenHeight, inclusiveRange, tangentTouch, uWrap, apexTouch, steepApex, alongGenerator };
 
 struct Case {
   Rule rule;
@@ -68,6 +76,7 @@ struct ShapeCases {
   std::string name;
   std::vector<Point2> points;
   std::vector<Case> cases;
+  std::optional<SplineKind> spline = std::nullopt;  // the points make this curve, traced exactly
 };
 
 Ray ray(Vec3 origin, Vec3 direction, float tnear = 0.0f, float tfar = kInf) { return {origin, direction, tnear, tfar}; }
@@ -257,7 +266,80 @@ ShapeCases openCone() {
   return s;
 }
 
-std::vector<ShapeCases> allShapes() { return {splitCylinder(), plainCylinder(), frustum(), openCone()}; }
+// A flat open cone: apex (0, 0, 0.5), rim r = 2 at z = 0, one segment (slope dz/dr = -1/4), for
+// rays steeper than it (A < 0) and parallel to its generators (A = 0). As a Bezier piece with its
+// inner points on the chord, (0.5, 0.375) and (1.5, 0.125), it is a straight part of a spline: the
+// curve leaf hands it to Wang's kernel, and the same cases hold.
+ShapeCases flatCone(bool asSpline) {
+  ShapeCases s{asSpline ? "flat open cone as a straight Bezier piece" : "flat open cone, apex (0, 0, 0.5), rim r = 2 at z = 0",
+               asSpline ? std::vector<Point2>{{0, 0.5}, {0.5, 0.375}, {1.5, 0.125}, {2, 0}} : std::vector<Point2>{{0, 0.5}, {2, 0}},
+               {},
+               asSpline ? std::optional<SplineKind>(SplineKind::bezier) : std::nullopt};
+  // Steeper than the cone, through the apex: the quadratic's A = ez^2 (dx^2 + dy^2) - er^2 dz^2 is
+  // negative and the apex a double root. Beyond the apex (below it) the ray is inside the cone
+  // (at depth h it is h from the axis, the cone 4 h), and it leaves through the open rim plane: the
+  // apex is its only hit. Direction (1, 0, -1) from (-1, 0, 1.5): the apex at t = 1.
+  s.cases.push_back({Rule::steepApex, "down through the apex, 1 across per 1 down: enters there",
+                     ray({-1, 0, 1.5}, {1, 0, -1}), Expected{1, 0, 0.0f}});
+  s.cases.push_back({Rule::steepApex, "down through the apex, direction (0, -0.5, -2)",
+                     ray({0, 0.5, 2.5}, {0, -0.5, -2}), Expected{1, 0, 0.0f}});
+  s.cases.push_back({Rule::steepApex, "up from inside, leaving through the apex at t = 0.5",
+                     ray({0.5, 0, 0}, {-1, 0, 1}), Expected{0.5, 0, 0.0f}});
+  s.cases.push_back({Rule::steepApex, "up from inside, tfar one float short of the apex",
+                     ray({0.5, 0, 0}, {-1, 0, 1}, 0, std::nextafter(0.5f, 0.0f)), std::nullopt});
+  // Parallel to the generator from the apex to (2, 0, 0), direction (4, 0, -1): A = 0 exactly (the
+  // unit direction's x is 4 times its z, exactly). From (-5, 0, 1.5) the ray runs at x = -5 + 4t,
+  // z = 1.5 - t, where the cone's radius is 4t - 4: it crosses the opposite generator (x = -radius)
+  // at t = 9/8, the point (-0.5, 0, 0.375), and stays inside down to the open rim.
+  s.cases.push_back({Rule::alongGenerator, "parallel to a generator, crossing the opposite one at t = 9/8",
+                     ray({-5, 0, 1.5}, {4, 0, -1}), Expected{1.125, 0, 0.5f}});
+  // In the generator's tangent plane (y = 2^-20 beside it, x equal to the cone's radius all along):
+  // rho^2 - radius^2 = 2^-40 throughout, outside everywhere, never touching (nor near the apex).
+  s.cases.push_back({Rule::alongGenerator, "parallel to a generator in its tangent plane, 2^-20 beside it: a miss",
+                     ray({-2, 0x1p-20f, 1}, {4, 0, -1}), std::nullopt});
+  return s;
+}
+
+// A capped barrel of splines: bottom disc (1, 0) from the axis, the wall a cubic r = 1 -> 1 via
+// (1.5, 0.25) and (1.5, 0.75) up to (1, 1), then the top disc back to the axis, every piece a
+// cubic Bezier (the discs' inner points on their chords). The wall's r turns at u = 1/2, so it is
+// split there into two curved parts meeting at (1.375, 0.5): parts 0 (bottom disc), 1 (wall,
+// heights [0, 0.5)), 2 (wall, [0.5, 1)), 3 (top disc). In a horizontal plane at a part's end height
+// the curve leaf takes that end's radius as it is: the answers are exact.
+ShapeCases splineBarrel() {
+  ShapeCases s{"capped spline barrel, wall bulging to r = 1.375 at z = 0.5",
+               {{0, 0}, {0.25, 0}, {0.75, 0}, {1, 0}, {1.5, 0.25}, {1.5, 0.75}, {1, 1}, {0.75, 1}, {0.25, 1}, {0, 1}},
+               {},
+               SplineKind::bezier};
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (the wall's split) from outside: part 2's circle",
+                     ray({-4, 0, 0.5}, {1, 0, 0}), Expected{2.625, 2, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis", ray({0, 0, 0.5}, {0, -0.5, 0}), Expected{2.75, 2, 0.75f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim) from outside: part 1's circle",
+                     ray({4, 0, 0}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss",
+                     ray({-4, 0, 1}, {1, 0, 0}), std::nullopt});
+  s.cases.push_back({Rule::inclusiveRange, "z = 0.5 from the axis, leaving the wall at t = tfar",
+                     ray({0, 0, 0.5}, {1, 0, 0}, 0, 1.375), Expected{1.375, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "z = 0.5 from the wall outwards, leaving it at t = tnear = 0",
+                     ray({1.375, 0, 0.5}, {1, 0, 0}), Expected{0, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "z = 0.5 from outside, entering the wall at t = tfar",
+                     ray({-4, 0, 0.5}, {1, 0, 0}, 0, 2.625), Expected{2.625, 2, 0.5f}});
+  s.cases.push_back({Rule::inclusiveRange, "z = 0.5 from the axis, tfar one float short of the wall",
+                     ray({0, 0, 0.5}, {1, 0, 0}, 0, std::nextafter(1.375f, 0.0f)), std::nullopt});
+  // The line y = 1.375 touches the circle of radius 1.375 at (0, 1.375): the curve leaf's quadratic
+  // x^2 + (1.375^2 - 1.375^2) has a discriminant of exactly 0.
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the curved wall at z = 0.5",
+                     ray({-4, 1.375, 0.5}, {1, 0, 0}), Expected{4, 2, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the curved wall at z = 0",
+                     ray({1, -4, 0}, {0, 2, 0}), Expected{2, 1, 0.0f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the curved wall",
+                     ray({-4, std::nextafter(1.375f, 2.0f), 0.5}, {1, 0, 0}), std::nullopt});
+  return s;
+}
+
+std::vector<ShapeCases> allShapes() {
+  return {splitCylinder(), plainCylinder(), frustum(), openCone(), flatCone(false), flatCone(true), splineBarrel()};
+}
 
 // ---------------------------------------------------------------------------------------------
 // Checking one answer.
@@ -274,7 +356,7 @@ void expectHit(const Case& c, const std::string& path, bool found, float t, std:
   if (!found) return;
   EXPECT_EQ(t, c.hit->t);
   EXPECT_EQ(segment, c.hit->segment);
-  if (c.rule != Rule::apexTouch) {
+  if (c.rule != Rule::apexTouch && c.rule != Rule::steepApex) {  // the azimuth of a point on the axis is arbitrary
     EXPECT_EQ(u, c.hit->u);
   }
 }
@@ -374,8 +456,9 @@ void checkPackets(const EmbreeScene& e, const std::vector<Case>& cases) {
 
 // Every case of every shape, for one search, on every path.
 void checkEveryPath(const Variant& variant, const ShapeCases& shape, const std::vector<Case>& cases) {
+  if (shape.spline && variant.options.method == Method::kajiya) return;  // its strips bound polylines only
   SCOPED_TRACE(std::string(variant.name) + ", " + shape.name);
-  const Shape built(Profile(shape.points), variant.options);
+  const Shape built = shape.spline ? Shape(Spline(*shape.spline, shape.points), variant.options) : Shape(Profile(shape.points), variant.options);
   for (const Case& c : cases) {
     const std::optional<Hit> hit = intersect(built, c.ray);
     expectHit(c, "intersect", hit.has_value(), hit ? hit->t : 0.0f, hit ? hit->segment : 0u, hit ? hit->u : 0.0f);
@@ -412,6 +495,59 @@ TEST(BoundaryRulesTest, TangentRaysTouchTheWallAndTheRim) { checkRule(Rule::tang
 TEST(BoundaryRulesTest, HitsJustBelowThePlusXAxisReportUZero) { checkRule(Rule::uWrap); }
 
 TEST(BoundaryRulesTest, NearlyLevelRaysThroughAnApexTouchIt) { checkRule(Rule::apexTouch); }
+
+TEST(BoundaryRulesTest, RaysSteeperThanTheConeEnterOrLeaveThroughTheApex) { checkRule(Rule::steepApex); }
+
+TEST(BoundaryRulesTest, RaysParallelToAGeneratorCrossTheConeOnceOrNever) { checkRule(Rule::alongGenerator); }
+
+// ---------------------------------------------------------------------------------------------
+// The tangent rule on the quadratic itself. g(x) = A x^2 + 2 B x + C is negative inside; at its
+// extremum e = -B / A it is -D / A, D = B^2 - A C. A double root (D = 0 exactly) is a touch, which
+// counts as reaching the surface whichever way g curves: a convex g (A > 0) touches from outside,
+// a concave one (A < 0) from inside. Through the kernel the concave touch occurs only at an apex,
+// where the segment's slab ends and the extremum never lies strictly inside the bracket, so only
+// these closed forms reach that branch of the rule.
+
+struct QuadraticCase {
+  const char* what;
+  detail::Quadratic g;
+  double x0, x1;
+  bool inside0, inside1;  // g < 0 at the ends, as the caller's predicates say
+  std::vector<double> roots;  // every root in [x0, x1], increasing (a double root twice)
+  detail::EndsOnSurface on = {};
+};
+
+const QuadraticCase kQuadraticCases[] = {
+    {"A > 0, D = 0: (x - 1)^2 touches from outside", {1, -1, 1}, 0, 2, false, false, {1, 1}},
+    {"A > 0, D > 0: (x - 1)^2 - 1 crosses at 0 and 2", {1, -1, 0}, -1, 3, false, false, {0, 2}},
+    {"A > 0, D < 0: (x - 1)^2 + 1 stays outside", {1, -1, 2}, 0, 2, false, false, {}},
+    {"A < 0, D = 0: -(x - 1)^2 touches from inside", {-1, 1, -1}, 0, 2, true, true, {1, 1}},
+    {"A < 0, D = 0: -(x - 1)^2 / 4 touches from inside", {-0.25, 0.25, -0.25}, -3, 3, true, true, {1, 1}},
+    {"A < 0, D > 0: 1 - (x - 1)^2 leaves at 0 and enters at 2", {-1, 1, 0}, -1, 3, true, true, {0, 2}},
+    {"A < 0, D < 0: -(x - 1)^2 - 1 stays inside", {-1, 1, -2}, 0, 2, true, true, {}},
+    {"A < 0, D = 0, touching at the end on the surface", {-1, 1, -1}, 0, 1, true, false, {1}, {false, true}},
+    {"A = 0: 2x - 1 leaves at 1/2", {0, 1, -1}, 0, 2, true, false, {0.5}},
+    {"A = 0, B = 0: a constant 1 stays outside (parallel to a generator, in its tangent plane)", {0, 0, 1}, 0, 2, false, false, {}},
+    {"A = 0, B = 0, C = 0 with the end signs apart (along the surface): the first point", {0, 0, 0}, 0.5, 2, false, true, {0.5}},
+};
+
+TEST(BoundaryRulesTest, ATangentTouchIsAHitWhateverTheSignOfTheLeadingCoefficient) {
+  for (const QuadraticCase& c : kQuadraticCases) {
+    SCOPED_TRACE(c.what);
+    const double D = c.g.B * c.g.B - c.g.A * c.g.C;
+    if (c.roots.size() == 2 && c.roots[0] == c.roots[1]) {
+      EXPECT_EQ(D, 0.0) << "the case's discriminant is exactly 0";
+    }
+    const detail::Roots all = detail::bracketedRoots<false>(c.g, c.x0, c.x1, c.inside0, c.inside1, c.on);
+    ASSERT_EQ(std::size_t(all.count), c.roots.size());
+    for (int i = 0; i < all.count; ++i) EXPECT_EQ(all.x[i], c.roots[i]) << "root " << i;
+    const detail::Roots first = detail::bracketedRoots<true>(c.g, c.x0, c.x1, c.inside0, c.inside1, c.on);
+    ASSERT_EQ(first.count, c.roots.empty() ? 0 : 1);
+    if (first.count == 1) {
+      EXPECT_EQ(first.x[0], c.roots[0]);
+    }
+  }
+}
 
 // ---------------------------------------------------------------------------------------------
 // u at the wrap, on the attribute code directly: the scalar azimuthFraction (intersect,

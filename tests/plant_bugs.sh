@@ -29,6 +29,8 @@ plants=(
   "tnear exclusive: a near end exactly on the surface is no hit|plugin/src/kernel/bracketed_roots.h|  if (on.at0) inside0 = !(eInside ? insideE : inside1);|"
   "apex touch clamped to the bracket as computed|plugin/src/kernel/segment_hits.h|std::max(sLow - widen, lo), std::min(sHigh + widen, hi)|sLow, sHigh"
   "a tangent touch (discriminant 0) misses|plugin/src/kernel/bracketed_roots.h|D >= 0.0 : D < 0.0|D > 0.0 : D < 0.0"
+  "a touch from inside (A < 0, discriminant 0) misses|plugin/src/kernel/bracketed_roots.h|D >= 0.0 : D < 0.0|D >= 0.0 : D <= 0.0"
+  "curve leaf, horizontal rays: an end exactly on the wall is no hit|plugin/src/kernel/curve_hits.h|EndsOnSurface{rho2Lo == R2, rho2Hi == R2}|EndsOnSurface{}"
   "packet u not wrapped below 1|plugin/src/util/azimuth.h|  for (int lane = 0; lane < kLanes; ++lane) u[lane] = u[lane] < 1.0f ? u[lane] : 0.0f;|"
   "single-ray set-up: tfar not scaled by the direction's length|plugin/src/kernel/meridian_ray.h|std::min((double(ray.tfar) - tCentre) * length, w)|std::min(double(ray.tfar) - tCentre, w)"
   "packet set-up: tfar not scaled by the direction's length|plugin/src/kernel/meridian_rays.h|minOf((tfar - tCentre) * length, w)|minOf(tfar - tCentre, w)"

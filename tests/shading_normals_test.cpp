@@ -1,7 +1,9 @@
 // ShadingNormals against analytic shapes: polylines inscribed in a sphere and in a torus's tube
 // shade with the analytic surface's normal (the interpolation is exact there, see revolve.h, so the
 // tolerance is rounding alone), creases keep a capped cylinder's rims sharp, and a crease angle of
-// 0 gives back the geometric normal.
+// 0 gives back the geometric normal; a polyline made from a curve shades with the curve's normals.
+#include "support/spline_profiles.h"
+
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>
@@ -210,6 +212,84 @@ TEST(ShadingNormalsTest, ZeroCreaseAngleGivesTheGeometricNormal) {
     EXPECT_LT(angleBetween(n, {hit->normal.x, hit->normal.y, hit->normal.z}), 1e-6);
   }
   EXPECT_GT(hits, 1000);
+}
+
+// A polyline made from a curve shades with the curve's own normal at the point of the chord's arc
+// that projects onto the hit. The reference here finds that point apart from the library: bisection
+// on the projection of Spline::at over the chord's parameter range, the tangent by a central
+// difference of Spline::at (one-sided at a piece's end), the azimuth from the hit point.
+TEST(ShadingNormalsTest, APolylineMadeFromACurveShadesWithTheCurvesNormal) {
+  double worstOfAll = 0;
+  for (const testing::NamedSpline& named : testing::closedSplines()) {
+    const Spline curve(named.kind, named.points);
+    double extent = 0;
+    for (const Point2& q : curve.bezier()) extent = std::max({extent, std::abs(q.r), std::abs(q.z)});
+    const Profile polyline = Profile::fromCurve(curve, 0.01 * extent);  // coarse: a few degrees a chord
+    const Shape shape(polyline);
+    const ShadingNormals fromCurve(polyline, curve), interpolated(polyline, ShadingNormals::kDefaultCreaseDegrees);
+    const std::span<const double> T = polyline.curveParameters();
+    const std::span<const Point2> p = polyline.points();
+    // The curve's largest curvature, from second differences of Spline::at (200 a piece).
+    double curvature = 0;
+    for (std::size_t piece = 0; piece < curve.pieceCount(); ++piece) {
+      for (int k = 1; k < 200; ++k) {
+        const double u = k / 200.0, h = 1e-4;
+        const Point2 m = curve.at(piece, u - h), c = curve.at(piece, u), q = curve.at(piece, u + h);
+        const double dr = (q.r - m.r) / (2 * h), dz = (q.z - m.z) / (2 * h);
+        const double ddr = (q.r - 2 * c.r + m.r) / (h * h), ddz = (q.z - 2 * c.z + m.z) / (h * h);
+        curvature = std::max(curvature, std::abs(dr * ddz - dz * ddr) / std::pow(std::hypot(dr, dz), 3));
+      }
+    }
+    std::mt19937_64 random(99);
+    double worst = 0, worstInterpolated = 0;
+    int hits = 0;
+    for (const Ray& ray : raysAt(extent, random, 4000)) {
+      const std::optional<Hit> hit = intersect(shape, ray);
+      if (!hit) continue;
+      ++hits;
+      const std::uint32_t i = hit->segment;
+      const Point2 a = p[i], b = p[i + 1];
+      const double rho = std::hypot(double(hit->point.x), double(hit->point.y)), er = b.r - a.r, ez = b.z - a.z;
+      const double target = ((rho - a.r) * er + (hit->point.z - a.z) * ez) / (er * er + ez * ez);
+      const double firstPiece = std::floor(T[i]), lastPiece = std::max(std::ceil(T[i + 1]) - 1, firstPiece);
+      const auto at = [&](double t) {
+        const double k = std::clamp(std::floor(t), firstPiece, lastPiece);
+        return curve.at(std::size_t(k), std::clamp(t - k, 0.0, 1.0));
+      };
+      const auto projection = [&](double t) {
+        const Point2 q = at(t);
+        return ((q.r - a.r) * er + (q.z - a.z) * ez) / (er * er + ez * ez);
+      };
+      double lo = T[i], hi = T[i + 1];
+      for (int k = 0; k < 60; ++k) (projection(0.5 * (lo + hi)) < std::clamp(target, 0.0, 1.0) ? lo : hi) = 0.5 * (lo + hi);
+      const double t = 0.5 * (lo + hi), h = 1e-7 * (T[i + 1] - T[i]);
+      const Point2 before = at(std::max(t - h, T[i])), after = at(std::min(t + h, T[i + 1]));
+      const double tr = after.r - before.r, tz = after.z - before.z, phi = std::atan2(double(hit->point.y), double(hit->point.x));
+      const double nr = tz / std::hypot(tr, tz), nz = -tr / std::hypot(tr, tz);
+      const Vec3d truth{nr * std::cos(phi), nr * std::sin(phi), nz};
+      const Vec3 n = fromCurve.normal(hit->segment, hit->u, hit->v);
+      EXPECT_NEAR(length(n), 1.0, 1e-6);
+      worst = std::max(worst, angleBetween(n, truth));
+      worstInterpolated = std::max(worstInterpolated, angleBetween(interpolated.normal(hit->segment, hit->u, hit->v), truth));
+    }
+    EXPECT_GT(hits, 300) << named.name;
+    // The library places the point by the float v (2^-25 of the profile's length), the reference by
+    // the float hit point (2^-24 of its distance from the origin a coordinate, within the extent):
+    // they may disagree along the curve by 4 2^-24 (length + extent), over which the normal turns
+    // by the curvature times that; plus the float normal's rounding (2^-23).
+    const double bound = 4 * 0x1p-24 * (polyline.arcLength().back() + extent) * curvature + 0x1p-23;
+    EXPECT_LT(worst, bound) << named.name;
+    std::printf("%s: %zu points, largest curvature %.3g: worst %.3g rad from the curve (bound %.3g), %.3g interpolated\n",
+                named.name.c_str(), p.size(), curvature, worst, bound, worstInterpolated);
+    worstOfAll = std::max(worstOfAll, worstInterpolated);
+  }
+  // Normals interpolated between the chords are off by far more (creases at chords turning by more
+  // than 30 degrees, circle fits elsewhere): the test sees the difference.
+  EXPECT_GT(worstOfAll, 0.1);
+  // Normals of one curve for a polyline of another are refused.
+  const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4)), larger(SplineKind::bezier, testing::bezierSphere(0.6, 4));
+  EXPECT_THROW(ShadingNormals(Profile::fromCurve(sphere, 1e-3), larger), std::invalid_argument);
+  EXPECT_THROW(ShadingNormals(Profile(std::vector<Point2>{{0, -0.5}, {0.5, 0}, {0, 0.5}}), sphere), std::invalid_argument);
 }
 
 TEST(ShadingNormalsTest, RejectsCreaseAnglesOutsideZeroTo180) {

@@ -79,6 +79,17 @@ TEST(SplineTest, CurvesCrossingTheAxisAreRefused) {
               "crosses the axis");
 }
 
+TEST(SplineTest, CurvesTouchingTheAxisBetweenTheirPointsAreRefused) {
+  // The middle piece (1, 0), (-1, 0.5), (1, 1) has r = (1 - u)^2 - 2 u (1 - u) + u^2 = (1 - 2u)^2:
+  // it touches the axis at u = 1/2, between the points the curve passes through.
+  expectError(SplineKind::quadratic, {{0, 0}, {0.5, 0}, {1, 0}, {-1, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}, Rule::crossesAxis, 2,
+              "touches the axis");
+  // Reaching the axis at a point the curve passes through stays valid (a pole).
+  EXPECT_NO_THROW(Spline(SplineKind::quadratic, std::vector<Point2>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0.5, 1}, {0, 1}}));
+  // And a curve coming within 1e-6 of the axis (r = (1 - 2u)^2 + 4e-6 u (1 - u)) does not touch it.
+  EXPECT_NO_THROW(Spline(SplineKind::quadratic, std::vector<Point2>{{0, 0}, {0.5, 0}, {1, 0}, {-1 + 2e-6, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}));
+}
+
 TEST(SplineTest, InterpolatingKindsRefuseRepeatedPoints) {
   expectError(SplineKind::catmullRom, {{0, 0}, {1, 1}, {1, 1}, {0, 2}}, Rule::segmentTooShort, 2, "repeats point 1");
   expectError(SplineKind::natural, {{0, 0}, {0, 0}, {0, 2}}, Rule::segmentTooShort, 1, "chords");

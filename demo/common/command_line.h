@@ -4,6 +4,7 @@
 // guard that turns any failure of the work into one line and status 1.
 #pragma once
 
+#include "common/tolerance_option.h"
 #include "io/output_set.h"
 
 #include <CLI/CLI.hpp>
@@ -75,6 +76,16 @@ CLI::Validator wholeNumberIn(T lo, T hi) {
         return "\"" + text.substr(0, 40) + "\" is not a number";
       },
       "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+// --tolerance (common/tolerance_option.h): a finite number > 0, or "pixel" where `pixelAllowed`;
+// an empty value is refused as any other.
+inline CLI::Validator toleranceCheck(bool pixelAllowed) {
+  return CLI::Validator(
+      [pixelAllowed](std::string& text) {
+        return toleranceOption(text, pixelAllowed) ? std::string() : toleranceRefusal(text, pixelAllowed);
+      },
+      pixelAllowed ? "pixel|T" : "T");
 }
 
 // Runs a tool's work after its command line is parsed: any exception becomes one line "tool:

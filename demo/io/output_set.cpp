@@ -230,15 +230,6 @@ OutputSet::Output& OutputSet::find(const std::string& path) const {
   throw std::logic_error(path + ": not an output of this run");
 }
 
-const std::string& OutputSet::temporary(const std::string& path) const {
-  Output& output = find(path);
-  if (output.descriptor >= 0 && !output.stream) {
-    ::close(output.descriptor);  // the writer opens it by name
-    output.descriptor = -1;
-  }
-  return output.temporary;
-}
-
 OutputStream& OutputSet::stream(const std::string& path) {
   Output& output = find(path);
   if (!output.stream) {
@@ -269,11 +260,20 @@ void OutputSet::close(Output& output) {
     errno = 0;
     const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
     const int error = errno != 0 ? errno : EIO;
+    // Every byte the stream (or a child handed its descriptor, as the plotter) wrote is in the
+    // file: its size is the stream's position. A writer that ignored a failed write cannot pass.
+    struct stat status {};
+    const off_t length = flushed ? ftello(file) : -1;
+    const bool whole = !flushed || (length >= 0 && fstat(fileno(file), &status) == 0 && status.st_size == length);
     const bool closed = std::fclose(file) == 0;
     const int closeError = errno;
     const OutputStream failed = *output.stream;
     output.stream.reset();
     if (!flushed) failed.fail(error);
+    if (!whole) {
+      throw std::runtime_error(output.path + ": write failed: the file holds " + std::to_string(status.st_size) + " of the " +
+                               std::to_string(length) + " bytes written");
+    }
     if (!closed) failed.fail(closeError);
   } else if (output.descriptor >= 0) {
     ::close(output.descriptor);

@@ -98,16 +98,17 @@ class OutputSet {
   // Outputs are refused against the inputs added so far and against each other.
   void add(std::string_view option, const std::string& path);
 
-  // The temporary file of output `path`, for writers that open files by name (OpenImageIO).
-  const std::string& temporary(const std::string& path) const;
   // The output's temporary as a stream (opened on first use, buffered); errors throw at once.
+  // Every output is written through its stream: no writer opens a temporary by name, so that no
+  // library's unchecked writes (OpenImageIO's PNG writer ignores a full disk) can leave a short file.
   OutputStream& stream(const std::string& path);
   // Writes the output through `write`, then closes it and checks that every byte was written.
   void write(const std::string& path, const std::function<void(std::FILE*)>& write);
 
-  // Closes every stream (a failed flush throws, naming its output), then renames every temporary
-  // over its output, signals held off meanwhile. If a rename fails, the outputs already renamed
-  // are put back as they were (from hard links made beforehand) and std::runtime_error names it.
+  // Closes every stream and verifies it (a failed flush or close, or a temporary whose size is not
+  // the stream's length, throws, naming its output), then renames every temporary over its output,
+  // signals held off meanwhile. If a rename fails, the outputs already renamed are put back as they
+  // were (from hard links made beforehand) and std::runtime_error names it.
   void commit();
 
  private:

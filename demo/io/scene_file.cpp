@@ -1,5 +1,6 @@
 #include "io/scene_file.h"
 
+#include "io/curve_polyline.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
 
@@ -170,12 +171,13 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
   std::optional<Profile> polyline;
   try {
-    polyline.emplace(Profile::fromCurve(*spline, tolerance > 0 ? tolerance : SceneProfile::kDrawingFraction * size));
-  } catch (const std::invalid_argument& error) {  // ProfileError too: the polyline crosses itself
+    // A tolerance the user gave is held to the rule every tool applies (io/curve_polyline.h).
+    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance) : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
+  } catch (const std::invalid_argument& error) {
     in.fail(tolerance > 0 ? tolerancePath : child(path, "spline"), error.what());
   }
-  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance};
-  return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::move(spline), 0};
+  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance, std::move(spline)};
+  return {name, std::move(*polyline), creaseDegrees, {}, source.file, spline, 0, spline};
 }
 
 SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json& json, const std::string& path) {
@@ -249,9 +251,8 @@ SceneTransform readTransform(const Reader& in, const Json& json, const std::stri
     }
     const auto [smallest, largest] = std::minmax({transform.scale[0], transform.scale[1], transform.scale[2]});
     if (largest > app::kMaxScaleRatio * smallest) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g", largest / smallest);
-      in.fail(scalePath, std::string("the scale factors differ by a factor ") + text +
+      // Every digit the ratio needs: 65537 must not read as a rounded 6.55e+04 within 65536.
+      in.fail(scalePath, "the scale factors differ by a factor " + numberText(largest / smallest) +
                              ": they lie within a factor 2^16 (65536) of each other, so that Embree's float transform "
                              "keeps rays leaving the object within range");
     }
@@ -333,6 +334,20 @@ double worldReach(const Profile& profile, const SceneTransform& transform) {
   return reach;
 }
 
+// Names appear in the tools' one-line messages: a control character (a newline, say) would break
+// the line, so it is refused where it is written.
+void checkName(const Reader& in, std::string_view name, const std::string& path) {
+  for (const char c : name) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "%02X", byte);
+      in.fail(path, "the name " + quotedText(name) + " holds a control character (byte 0x" + code +
+                        "); names appear in one-line messages, so they may not");
+    }
+  }
+}
+
 SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
   const Reader in(file);
   const Json root = json::parse(text, in);
@@ -345,12 +360,14 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
   const Json& profiles = in.required(root, "", "profiles");
   if (!profiles.is_object()) in.fail("profiles", std::string("expected an object of named profiles, found ") + profiles.type_name());
   for (const auto& [name, value] : profiles.items()) {
+    checkName(in, name, child("profiles", name));
     scene.profiles.push_back(readProfile(in, name, value, child("profiles", name), directory));
   }
 
   const Json& materials = in.required(root, "", "materials");
   if (!materials.is_object()) in.fail("materials", std::string("expected an object of named materials, found ") + materials.type_name());
   for (const auto& [name, value] : materials.items()) {
+    checkName(in, name, child("materials", name));
     scene.materials.push_back(readMaterial(in, name, value, child("materials", name)));
   }
 
@@ -361,7 +378,10 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     SceneObject object;
     object.profile = lookUp(in, scene.profiles, in.required(json, path, "profile"), child(path, "profile"), "profile");
     object.material = lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
-    if (const Json* name = in.optional(json, "name")) object.name = in.string(*name, child(path, "name"));
+    if (const Json* name = in.optional(json, "name")) {
+      object.name = in.string(*name, child(path, "name"));
+      checkName(in, object.name, child(path, "name"));
+    }
     object.transform = readTransform(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
     if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform); !(reach <= app::kMaxWorldCoordinate)) {

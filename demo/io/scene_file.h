@@ -53,6 +53,9 @@ struct SceneProfile {
   std::string csvFile{};  // the CSV it was read from, as opened; empty for inline points
   std::optional<Spline> spline{};  // a curved "spline" without a "tolerance": traced exactly
   double tolerance = 0;          // the "tolerance" given, or 0
+  // The curve `profile` was made from (a curved "spline", with or without a "tolerance"): tools
+  // shading its polyline take the curve's own normals (ShadingNormals(profile, *curve)).
+  std::optional<Spline> curve{};
 };
 
 enum class MaterialType { diffuse, metal, mirror, glass };

@@ -1,9 +1,13 @@
 #include "curve_tolerance.h"
 
+#include "common/tolerance_option.h"
+#include "io/curve_polyline.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 namespace revolve::render {
@@ -25,18 +29,9 @@ Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
 }  // namespace
 
 CurveTolerance parseCurveTolerance(const std::string& text) {
-  if (text == "pixel") return {true, 0};
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !(value > 0 && value < HUGE_VAL)) {
-    throw std::runtime_error("--tolerance \"" + text.substr(0, 40) + "\": expected \"pixel\" or a number > 0 (in each profile's units)");
-  }
-  return {false, value};
+  const std::optional<app::ToleranceOption> option = app::toleranceOption(text, true);
+  if (!option) throw std::runtime_error("--tolerance: " + app::toleranceRefusal(text, true));
+  return {option->pixel, option->value};
 }
 
 std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& choice, int height) {
@@ -75,12 +70,18 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     double size = 0;
     for (const Point2& p : profile.spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
     if (choice.pixel && tolerance[i] < 0x1p-30 * size) continue;
+    std::optional<Profile> polyline;
     try {
-      profile.profile = Profile::fromCurve(*profile.spline, tolerance[i]);
+      // A number is held to the scene file's rule (io/curve_polyline.h). A footprint so wide that
+      // the polyline would lie on the axis (every object made of the profile spans about a pixel)
+      // would make the objects vanish: they stay exact instead.
+      polyline.emplace(choice.pixel ? Profile::fromCurve(*profile.spline, tolerance[i]) : io::curvePolyline(*profile.spline, tolerance[i]));
     } catch (const std::invalid_argument& error) {
-      throw std::runtime_error("--tolerance: profile \"" + profile.name + "\": " + error.what());
+      throw std::runtime_error("--tolerance: profiles." + profile.name + ": " + error.what());
     }
-    profile.spline.reset();
+    if (io::onTheAxis(*polyline)) continue;
+    profile.profile = std::move(*polyline);
+    profile.spline.reset();  // traced as the polyline; profile.curve still gives its normals
     profile.tolerance = tolerance[i];
     polylines.push_back({profile.name, tolerance[i], profile.profile.points().size()});
   }

@@ -16,7 +16,8 @@ struct CurveTolerance {
   double value = 0;    // else: this tolerance, in each profile's own units (> 0)
 };
 
-// "pixel" or a number > 0; throws std::runtime_error naming the option otherwise.
+// "pixel" or a finite number > 0 (common/tolerance_option.h, shared with revolve-trace); throws
+// std::runtime_error naming the option otherwise.
 CurveTolerance parseCurveTolerance(const std::string& text);
 
 struct CurvePolyline {
@@ -29,8 +30,10 @@ struct CurvePolyline {
 // tolerance (for `pixel`: 2 d tan(fov / 2) / height, d the distance from the camera to the nearest
 // point of the object's bounding sphere, over the object's largest scale; the least over the
 // profile's objects). A profile seen from inside an object's bounding sphere, or whose footprint is
-// below 2^-30 of its size, stays exact. Throws
-// std::runtime_error naming the profile when its polyline is not a valid profile.
+// below 2^-30 of its size, or so wide that its polyline would lie on the axis (its objects span
+// about a pixel), stays exact. A number is held to the scene file's rule (io/curve_polyline.h):
+// std::runtime_error naming the profile when it would collapse the curve onto the axis. The
+// polylines shade with their curves' own normals (SceneProfile::curve).
 std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& tolerance, int height);
 
 }  // namespace revolve::render

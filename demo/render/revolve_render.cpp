@@ -28,6 +28,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -119,6 +120,32 @@ std::pair<int, int> parsePixel(const std::string& text, int width, int height) {
   return {xy[0], xy[1]};
 }
 
+void printWarnings(const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
+}
+
+// What is valid but almost surely not meant: points the profiles dropped, objects nothing can see
+// (of the profiles as they will be traced).
+std::vector<std::string> sceneWarnings(const io::SceneDescription& description) {
+  std::vector<std::string> warnings;
+  for (const io::SceneProfile& profile : description.profiles) warnings.insert(warnings.end(), profile.warnings.begin(), profile.warnings.end());
+  for (std::string& warning : scene::degenerateObjectWarnings(description, true)) warnings.push_back(std::move(warning));
+  return warnings;
+}
+
+// Kajiya's strip tree bounds polylines: a curve traced exactly is refused before any work, naming
+// the scene's profile and the ways that work.
+void checkKajiya(const Options& options, const io::SceneDescription& description) {
+  if (options.geometry != "kajiya") return;
+  for (const io::SceneObject& object : description.objects) {
+    const io::SceneProfile& profile = description.profiles[object.profile];
+    if (!profile.spline) continue;
+    throw std::runtime_error(description.file + ": profiles." + profile.name + ": a " + splineKindName(profile.spline->kind()) +
+                             " spline, traced exactly: --geometry kajiya cannot trace it (Kajiya's strip tree bounds "
+                             "polylines only); use --geometry mibit or linear, or --tolerance to trace it as a polyline");
+  }
+}
+
 // Prints the object under the pixel (as the GLBot simulator's scene editor): index, name, hit point, distance.
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
@@ -132,29 +159,18 @@ void pickObject(const Options& options, const io::SceneDescription& description,
               picked->point.y, picked->point.z, picked->distance);
 }
 
-// The scene, with its warnings on stderr: points the profiles dropped, objects nothing can see.
-io::SceneDescription readScene(const Options& options) {
-  io::SceneDescription description = io::readScene(options.scene);
-  for (const io::SceneProfile& profile : description.profiles) {
-    for (const std::string& warning : profile.warnings) std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
-  }
-  for (const std::string& warning : scene::degenerateObjectWarnings(description, true)) {
-    std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
-  }
-  return description;
-}
-
 // --export-pov: the scene as POV-Ray SDL (io/pov_scene.h), with whitted's depth and shadows as the
-// file's defaults, into the run's outputs. What maps only approximately is reported as a warning.
-void exportPov(const Options& options, const io::SceneDescription& description, io::OutputSet& outputs) {
+// file's defaults, into the run's outputs. What maps only approximately is returned as warnings,
+// printed once the file is written (a run that fails writes no file to warn about).
+std::vector<std::string> exportPov(const Options& options, const io::SceneDescription& description, io::OutputSet& outputs) {
   io::PovDefaults defaults;
   defaults.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
   defaults.shadows = !options.noShadows;
   const io::PovScene pov = io::povScene(description, defaults);
   outputs.stream(options.exportPov).write(pov.text);
-  for (const std::string& warning : pov.warnings) {
-    std::fprintf(stderr, "revolve-render: warning: %s: %s\n", options.exportPov.c_str(), warning.c_str());
-  }
+  std::vector<std::string> warnings;
+  for (const std::string& warning : pov.warnings) warnings.push_back(options.exportPov + ": " + warning);
+  return warnings;
 }
 
 void checkPovName(const std::string& path) {
@@ -168,7 +184,8 @@ void run(const Options& options) {
     // Picking prints what lies under a pixel and renders nothing: an output would stay unwritten.
     if (!options.output.empty()) throw std::runtime_error("-o " + options.output + ": --pick renders no image; leave -o out");
     if (!options.stats.empty()) throw std::runtime_error("--stats " + options.stats + ": --pick renders nothing to report; leave --stats out");
-    const io::SceneDescription description = readScene(options);
+    const io::SceneDescription description = io::readScene(options.scene);
+    printWarnings(sceneWarnings(description));
     const int width = options.width > 0 ? options.width : description.camera.width.value_or(640);
     const int height = options.height > 0 ? options.height : description.camera.height.value_or(480);
     pickObject(options, description, width, height);
@@ -185,12 +202,7 @@ void run(const Options& options) {
   if (renders) render::imageFormatFor(output);  // an unknown extension fails before any work
   std::optional<render::CurveTolerance> tolerance;
   if (!options.tolerance.empty()) tolerance = render::parseCurveTolerance(options.tolerance);
-  io::SceneDescription description = readScene(options);
-  if (renders) {
-    for (const std::string& warning : render::glassWarnings(description)) {
-      std::fprintf(stderr, "revolve-render: warning: %s\n", warning.c_str());
-    }
-  }
+  io::SceneDescription description = io::readScene(options.scene);
   // Every output is named now (its temporary made: the folder takes files), and none may be an input.
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
@@ -198,9 +210,12 @@ void run(const Options& options) {
   if (!options.exportPov.empty()) outputs.add("--export-pov", options.exportPov);
   if (renders) outputs.add("-o", output);
   if (renders && !options.stats.empty()) outputs.add("--stats", options.stats);
-  if (!options.exportPov.empty()) exportPov(options, description, outputs);
+  std::vector<std::string> povWarnings;
+  if (!options.exportPov.empty()) povWarnings = exportPov(options, description, outputs);
   if (!renders) {
     outputs.commit();
+    printWarnings(sceneWarnings(description));
+    printWarnings(povWarnings);
     return;
   }
 
@@ -223,7 +238,12 @@ void run(const Options& options) {
 
   std::vector<render::CurvePolyline> curves;
   if (tolerance) curves = render::applyCurveTolerance(description, *tolerance, settings.height);
+  checkKajiya(options, description);
   const scene::EmbreeScene built(description, buildSettings(options));
+  // Every refusal before this point is the run's one line; the scene's warnings now (of the
+  // profiles as traced), before the long work.
+  printWarnings(sceneWarnings(description));
+  printWarnings(render::glassWarnings(description));
   render::ProgressReport progress;
   const render::RenderResult result =
       render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
@@ -235,9 +255,10 @@ void run(const Options& options) {
   render::Image image = result.image;
   const float scale = float(std::exp2(options.exposure));
   for (float& value : image.pixels) value *= scale;
-  render::writeImage(outputs.temporary(output), output, image);
+  render::writeImage(outputs.stream(output), output, image);
   if (!options.stats.empty()) writeStats(outputs, options, settings, built, result, description.objects.size(), curves);
   outputs.commit();
+  printWarnings(povWarnings);
 }
 
 }  // namespace
@@ -288,7 +309,7 @@ int main(int argc, char** argv) {
   app.add_option("--tolerance", options.tolerance,
                  "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
                  "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile")
-      ->check(app::kNonEmpty);
+      ->check(app::toleranceCheck(true));
   app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))

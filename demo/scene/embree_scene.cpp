@@ -126,6 +126,17 @@ float normaliseDirection(RTCRay& ray) noexcept {
 
 }  // namespace
 
+namespace {
+
+// A polyline made from a curve shades with the curve's own normals (a coarse polyline then looks
+// like the curve); any other profile with normals interpolated between its vertices.
+ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
+  if (source.curve && !source.profile.curveParameters().empty()) return ShadingNormals(source.profile, *source.curve);
+  return ShadingNormals(source.profile, source.creaseDegrees);
+}
+
+}  // namespace
+
 struct EmbreeScene::Prototype {
   Profile profile;
   ShadingNormals normals;
@@ -139,7 +150,7 @@ struct EmbreeScene::Prototype {
   app::Scene scene;
 
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
-      : profile(source.profile), normals(source.profile, source.creaseDegrees), scene(app::newScene(device)) {
+      : profile(source.profile), normals(shadingNormalsOf(source)), scene(app::newScene(device)) {
     if (settings.mesh) {
       slices = settings.slices;
       mesh = newTessellatedGeometry(device, profile, slices);
@@ -198,9 +209,23 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     for (std::size_t i = 0; i < description.objects.size(); ++i) {
       const io::SceneObject& object = description.objects[i];
       const io::SceneProfile& profile = description.profiles[object.profile];
-      const std::string which = "object " + std::to_string(i) + (object.name.empty() ? "" : " \"" + object.name + "\"") +
-                                " (profile \"" + profile.name + "\")";
-      if (std::optional<std::string> limitation = coneCurveLimitation(profile.profile)) {
+      // A profile made from a curve is traced as its polyline: its points are that polyline's, not
+      // the scene's, and the message says so.
+      const bool fromCurve = profile.spline || profile.tolerance > 0;
+      std::string which = description.file + ": objects[" + std::to_string(i) + "]" +
+                          (object.name.empty() ? "" : " \"" + object.name + "\"") + " (profiles." + profile.name;
+      if (fromCurve) {
+        double size = 0;  // as the scene reader measures a spline (io::SceneProfile::kDrawingFraction)
+        if (profile.spline) {
+          for (const Point2& p : profile.spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+        }
+        const double within = profile.tolerance > 0 ? profile.tolerance : io::SceneProfile::kDrawingFraction * size;
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", within);
+        which += std::string(", a curve traced as its polyline within ") + text;
+      }
+      which += ")";
+      if (std::optional<std::string> limitation = coneCurveLimitation(profile.profile, fromCurve ? "polyline point" : "profile point")) {
         throw std::runtime_error(which + " cannot be traced as Embree's linear cone curve: " + *limitation);
       }
       const io::Vec3d& scale = object.transform.scale;

@@ -7,6 +7,7 @@
 #include "common/embree_rays.h"
 #include "common/memory_check.h"
 #include "common/ray_limits.h"
+#include "io/curve_polyline.h"
 #include "io/text_files.h"
 
 #include <revolve/revolve.h>
@@ -33,7 +34,7 @@ struct Options {
   std::string method = "mibit", shell = "cylinder", spline = "linear";
   std::uint32_t subdivisions = 0;
   std::uint32_t slices = 64;
-  double tolerance = 0;
+  double tolerance = 0;  // 0: the curve is traced exactly
 };
 
 // What is traced: the polyline, and the curve when it is traced exactly.
@@ -51,6 +52,10 @@ LoadedProfile loadProfile(const Options& options) {
   if (options.tolerance > 0 && kind == SplineKind::linear) {
     throw std::runtime_error("--tolerance applies to a curved --spline (quadratic, bezier, catmull-rom or natural) only");
   }
+  if (options.method == "kajiya" && kind != SplineKind::linear && !(options.tolerance > 0)) {
+    throw std::runtime_error("--method kajiya: Kajiya's strip tree bounds polylines only, and a curved --spline is traced "
+                             "exactly; use --method mibit or linear, or --tolerance to trace the curve as a polyline");
+  }
   try {
     if (kind == SplineKind::linear) {
       Profile profile(file.points);
@@ -62,7 +67,8 @@ LoadedProfile loadProfile(const Options& options) {
     Spline spline(kind, file.points);
     double size = 0;
     for (const Point2& p : spline.bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
-    Profile polyline = Profile::fromCurve(spline, options.tolerance > 0 ? options.tolerance : 1e-5 * size);
+    // A tolerance the user gave is held to the scene file's rule (io/curve_polyline.h).
+    Profile polyline = options.tolerance > 0 ? io::curvePolyline(spline, options.tolerance) : Profile::fromCurve(spline, 1e-5 * size);
     if (options.tolerance > 0) return {std::move(polyline), std::nullopt};
     return {std::move(polyline), std::move(spline)};
   } catch (const ProfileError& error) {
@@ -169,10 +175,18 @@ void run(const Options& options) {
   io::writeHitsCsv(outputs.stream(options.out), hits);
   outputs.commit();
   const std::size_t hitCount = std::size_t(std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
+  // What was traced: the curve itself (its own points), or a polyline (of the file's points, of the
+  // curve within --tolerance, or, for the mesh, of the curve within 1e-5 of its size).
   const std::string method = mesh ? "mesh, " + std::to_string(options.slices) + " slices" : options.method;
-  std::printf("revolve-trace: %s, %s; %s (%s) traced in %.3g s (%.3g Mrays/s, %s); wrote %s\n",
-              app::counted(rays.size(), "ray").c_str(), app::counted(hitCount, "hit").c_str(),
-              app::counted(profile.points().size(), "profile point").c_str(), method.c_str(), seconds,
+  std::string traced = app::counted(profile.points().size(), "profile point") + " (" + method + ")";
+  if (!mesh && loaded.curve) {
+    traced = "a " + std::string(splineKindName(loaded.curve->kind())) + " spline of " + app::counted(loaded.curve->points().size(), "point") +
+             " (" + method + ", exactly)";
+  } else if (options.spline != "linear") {
+    traced = app::counted(profile.points().size(), "polyline point") + " (" + method + ")";
+  }
+  std::printf("revolve-trace: %s, %s; %s traced in %.3g s (%.3g Mrays/s, %s); wrote %s\n",
+              app::counted(rays.size(), "ray").c_str(), app::counted(hitCount, "hit").c_str(), traced.c_str(), seconds,
               seconds > 0 ? double(rays.size()) / seconds * 1e-6 : 0.0,
               app::counted(std::size_t(tbb::info::default_concurrency()), "thread").c_str(), options.out.c_str());
 }
@@ -207,7 +221,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--tolerance", options.tolerance,
                  "trace a curved --spline as its polyline within this distance (Profile::fromCurve) instead of exactly")
-      ->check(CLI::PositiveNumber);
+      ->check(app::toleranceCheck(false));
   app.add_option("--slices", options.slices, "azimuthal steps of the tessellated mesh (--method mesh)")
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 24))
       ->capture_default_str();

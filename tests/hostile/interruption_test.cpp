@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -31,7 +32,8 @@ using testing::RunningProcess;
 using testing::runProcess;
 using testing::ScratchDirectory;
 
-const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH;
+const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH, kTrace = REVOLVE_TRACE_PATH,
+                  kClearance = REVOLVE_CLEARANCE_PATH;
 
 // Waits (up to 30 s) until `dir` holds a file whose name starts with `prefix` and that has at least
 // `bytes`: the tool is then writing it.
@@ -114,6 +116,7 @@ TEST(FullDisk, AFailedWriteIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   dir.write("poses.csv", testing::manyPoses(40));  // 25 MB of binary PCD
   dir.write("scan.pcd", "an existing scan");
   dir.write("image.exr", "an existing image");
+  dir.write("image.png", "an existing image");
   const std::set<std::string> before = dir.entries();
   const ProcessResult lidar = runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd",
                                                   "--pcd-data", "binary"},
@@ -125,9 +128,15 @@ TEST(FullDisk, AFailedWriteIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   EXPECT_EQ(render.status, 1);
   EXPECT_EQ(lineCount(render.err), 1u) << render.err;
   EXPECT_THAT(render.err, StartsWith("revolve-render: image.exr: write failed: "));
+  // A PNG (6.5 KB at this size) went through OpenImageIO's PNG writer, which ignored the failure.
+  const ProcessResult png = runProcess(kRender, {"scene.json", "-o", "image.png", "--width", "256", "--height", "192"},
+                                       ProcessOptions{dir.path().string(), {}, 4096}, 60);
+  EXPECT_EQ(png.status, 1);
+  EXPECT_EQ(png.err, "revolve-render: image.png: write failed: File too large\n");
   EXPECT_EQ(dir.entries(), before) << "a partial file or a temporary was left";
   EXPECT_EQ(readWholeFile(dir / "scan.pcd"), "an existing scan");
   EXPECT_EQ(readWholeFile(dir / "image.exr"), "an existing image");
+  EXPECT_TRUE(readWholeFile(dir / "image.png") == "an existing image") << "the old image was replaced";
 }
 
 // The same on a file system that is really full: a 256 KiB tmpfs mounted in a private mount
@@ -154,6 +163,126 @@ TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   EXPECT_EQ(run.status, 1);
   EXPECT_EQ(run.err, "revolve-lidar: full/scan.pcd: write failed: No space left on device\n");
   EXPECT_EQ(run.out, "scan.pcd\nan existing scan") << "only the old scan, as it was";
+}
+
+// Runs `tool args` in `dir` with full/ a file system that is really full: a 64 KiB tmpfs mounted in
+// a private mount namespace (root, or a user namespace), holding an existing `output` and a filler
+// taking every other byte, so that the tool's first write there fails. stdout ends with a listing
+// of full/ and the output's contents after the run. nullopt where no tmpfs can be mounted.
+std::optional<ProcessResult> runOnAFullFileSystem(const ScratchDirectory& dir, const std::string& tool, const std::string& output,
+                                                 const std::vector<std::string>& args, const std::vector<std::string>& environment = {}) {
+  std::filesystem::create_directories(dir / "full");
+  const std::string script =
+      "mount -t tmpfs -o size=64k revolve-full full 2>/dev/null || exit 77\n"
+      "printf 'an existing file' > \"full/$1\"\n"
+      "head -c 1048576 /dev/zero > full/filler 2>/dev/null\n"
+      "name=$1; shift\n"
+      "\"$@\"\n"
+      "status=$?\n"
+      "echo '== full/'; ls -A full | grep -vx filler; cat \"full/$name\"; exit $status\n";
+  std::vector<std::string> shell{"/bin/sh", "-c", script, "sh", output, tool};
+  shell.insert(shell.end(), args.begin(), args.end());
+  const auto unshare = [&](std::vector<std::string> namespaces) {
+    namespaces.insert(namespaces.end(), shell.begin(), shell.end());
+    return runProcess("/usr/bin/unshare", namespaces, ProcessOptions{dir.path().string(), environment, -1}, 120);
+  };
+  ProcessResult run = unshare({"--mount", "--propagation", "private"});
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) run = unshare({"--user", "--map-root-user", "--mount"});
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) return std::nullopt;
+  return run;
+}
+
+struct FullDiskCase {
+  std::string tool, name, output;  // the tool, its name in messages, the output on the full disk (in full/)
+  std::vector<std::string> args;
+};
+
+// Every output format of every tool, written on a full file system: status 1, one line naming the
+// output and the cause, the existing file as it was, nothing else written (outputs of the same run
+// elsewhere included). OpenImageIO's PNG writer, given the file by name, ignored the failed writes
+// and the render reported success with a short, undecodable PNG in place of the old one.
+TEST(FullDisk, EveryOutputOfEveryToolOnAFullFileSystemFailsInOneLineAndLeavesItAsItWas) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  dir.write("sensor.json", testing::kPlanarSensor);
+  dir.write("poses.csv", testing::kPoses);
+  dir.write("profile.csv", "r,z\n0,0\n1,0\n1,1\n0,1\n");
+  dir.write("rays.csv", "ox,oy,oz,dx,dy,dz,tnear,tfar\n-4,0,0.5,1,0,0,0,inf\n");
+  dir.write("curve.csv", "r,z\n0,0\n0.5,0\n1,0.5\n0.5,1\n0,1\n");
+  std::vector<FullDiskCase> cases = {
+      {kRender, "revolve-render", "image.png", {"scene.json", "-o", "full/image.png", "--width", "64", "--height", "48"}},
+      {kRender, "revolve-render", "image.exr", {"scene.json", "-o", "full/image.exr", "--width", "64", "--height", "48"}},
+      {kRender, "revolve-render", "stats.json", {"scene.json", "-o", "image.png", "--stats", "full/stats.json"}},
+      {kRender, "revolve-render", "scene.pov", {"scene.json", "--export-pov", "full/scene.pov"}},
+      {kRender, "revolve-render", "scene.pov", {"scene.json", "--export-pov", "full/scene.pov", "-o", "image.png"}},
+      {kTrace, "revolve-trace", "hits.csv", {"--profile", "profile.csv", "--rays", "rays.csv", "--out", "full/hits.csv"}},
+      {kTrace, "revolve-trace", "hits.csv",
+       {"--profile", "curve.csv", "--spline", "quadratic", "--rays", "rays.csv", "--out", "full/hits.csv"}},
+      {kLidar, "revolve-lidar", "scan.csv", {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "full/scan.csv"}},
+      {kLidar, "revolve-lidar", "scan.pcd", {"scene.json", "--sensor", "sensor.json", "-o", "full/scan.pcd", "--pcd-data", "binary"}},
+      {kLidar, "revolve-lidar", "scan.pcd", {"scene.json", "--sensor", "sensor.json", "-o", "full/scan.pcd"}},
+      {kLidar, "revolve-lidar", "plot.png", {"scene.json", "--sensor", "sensor.json", "-o", "scan.csv", "--plot", "full/plot.png"}},
+      {kClearance, "revolve-clearance", "clearance.csv",
+       {"scene.json", "--robot", "0.3,0,1.5", "--poses", "poses.csv", "-o", "full/clearance.csv"}},
+  };
+#ifdef REVOLVE_LIDAR_BENCH_PATH
+  cases.push_back({REVOLVE_LIDAR_BENCH_PATH, "revolve-lidar-bench", "bench.json",
+                   {"scene.json", "--poses", "poses.csv", "--out", "full/bench.json", "--repeats", "1"}});
+#endif
+#ifdef REVOLVE_BENCH_PATH
+  for (const char* option : {"--json", "--csv"}) {
+    const std::string output = option == std::string("--json") ? "bench.json" : "bench.csv";
+    cases.push_back({REVOLVE_BENCH_PATH, "revolve-bench", output,
+                     {"--quick", "--rays", "8", "--camera", "4x2", "--repetitions", "1", option, "full/" + output, "speed-error",
+                      "--shapes", "sphere"}});
+  }
+#endif
+  const std::set<std::string> before = dir.entries();
+  for (const FullDiskCase& c : cases) {
+    std::string command = c.name;
+    for (const std::string& arg : c.args) command += " " + arg;
+    SCOPED_TRACE(command);
+    const std::optional<ProcessResult> run = runOnAFullFileSystem(dir, c.tool, c.output, c.args);
+    if (!run) GTEST_SKIP() << "cannot mount a tmpfs here";
+    EXPECT_EQ(run->status, 1) << run->err;
+    // The plotter writes the plot itself and fails as Python does; every other write is the tool's.
+    if (c.output == "plot.png") {
+      EXPECT_EQ(lineCount(run->err), 1u) << run->err;
+      EXPECT_THAT(run->err, ::testing::StartsWith(c.name + ": full/" + c.output + ": "));
+      EXPECT_THAT(run->err, ::testing::HasSubstr("No space left on device"));
+    } else if (c.name == "revolve-bench") {  // its progress goes to stderr too
+      EXPECT_THAT(run->err, ::testing::EndsWith("\n" + c.name + ": full/" + c.output + ": write failed: No space left on device\n"));
+    } else {
+      EXPECT_EQ(run->err, c.name + ": full/" + c.output + ": write failed: No space left on device\n");
+    }
+    EXPECT_THAT(run->out, ::testing::EndsWith("== full/\n" + c.output + "\nan existing file")) << "only the old file, as it was";
+    std::set<std::string> after = dir.entries();
+    after.erase("full");
+    EXPECT_EQ(after, before) << "an output of the same run was written elsewhere, or a temporary left";
+  }
+}
+
+// The issue as a user met it: an 8 KiB tmpfs holding an old image; the new one does not fit.
+TEST(FullDisk, APngThatDoesNotFitLeavesTheOldOneAndFailsInOneLine) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kPoleScene);
+  std::filesystem::create_directory(dir / "small");
+  const std::string script =
+      "mount -t tmpfs -o size=8k revolve-small small 2>/dev/null || exit 77\n"
+      "printf OLD > small/z.png\n"
+      "\"$1\" scene.json -o small/z.png --width 200 --height 150 --spp 1 --threads 1\n"
+      "status=$?\n"
+      "ls -A small; cat small/z.png; exit $status\n";
+  ProcessResult run = runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kRender},
+                                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
+    run = runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kRender},
+                     ProcessOptions{dir.path().string(), {}, -1}, 60);
+  }
+  if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(run.err, "revolve-render: small/z.png: write failed: No space left on device\n");
+  EXPECT_TRUE(run.out == "z.png\nOLD") << "the old image was replaced";
 }
 
 // The scan is streamed: 80 poses take no more memory than 40 (the whole table of 40 more poses

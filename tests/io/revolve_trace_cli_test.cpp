@@ -505,6 +505,12 @@ TEST_F(TraceCliTest, SplinesAreTracedExactlyOrWithinTheirTolerance) {
     if (tolerance > 0) args.insert(args.end(), {"--tolerance", "0.001"});
     const Result result = runTrace(args);
     ASSERT_EQ(result.status, 0) << result.err;
+    // The summary names what was traced: the curve's own 13 points, or its polyline's.
+    if (tolerance == 0) {
+      EXPECT_THAT(result.out, HasSubstr("; a bezier spline of 13 points (mibit, exactly) traced in "));
+    } else {
+      EXPECT_THAT(result.out, ::testing::ContainsRegex("; [0-9]+ polyline points \\(mibit\\) traced in "));
+    }
     const std::vector<HitLine> hits = readHits(outPath());
     ASSERT_EQ(hits.size(), directions.size());
     for (std::size_t i = 0; i < hits.size(); ++i) {
@@ -593,8 +599,20 @@ const std::vector<BadInput> kBadInputs = {
      .usageError = true},
     {.name = "UnknownOption", .args = {"--bogus", "1"}, .message = {"--bogus"}, .usageError = true},
     {.name = "SplineNotAnOption", .args = {"--spline", "cubic"}, .message = {"--spline"}, .usageError = true},
-    {.name = "ToleranceNotPositive", .args = {"--spline", "natural", "--tolerance", "0"}, .message = {"--tolerance"},
-     .usageError = true},
+    // --tolerance is read as revolve-render reads it (common/tolerance_option.h): the value as
+    // written, and the rule, in a sentence.
+    {.name = "ToleranceNotPositive", .args = {"--spline", "natural", "--tolerance", "0"},
+     .message = {"--tolerance: \"0\" is not a finite number > 0 (the polyline's largest distance from the curve"}, .usageError = true},
+    {.name = "ToleranceNegative", .args = {"--spline", "natural", "--tolerance", "-1"},
+     .message = {"--tolerance: \"-1\" is not a finite number > 0"}, .usageError = true},
+    {.name = "ToleranceNotANumber", .args = {"--spline", "natural", "--tolerance", "nan"},
+     .message = {"--tolerance: \"nan\" is not a finite number > 0"}, .usageError = true},
+    {.name = "ToleranceInfinite", .args = {"--spline", "natural", "--tolerance", "inf"},
+     .message = {"--tolerance: \"inf\" is not a finite number > 0"}, .usageError = true},
+    {.name = "ToleranceText", .args = {"--spline", "natural", "--tolerance", "abc"},
+     .message = {"--tolerance: \"abc\" is not a finite number > 0"}, .usageError = true},
+    {.name = "ToleranceEmpty", .args = {"--spline", "natural", "--tolerance", ""},
+     .message = {"--tolerance: \"\" is not a finite number > 0"}, .usageError = true},
     {.name = "ToleranceForAPolyline", .args = {"--tolerance", "0.01"}, .message = {"--tolerance", "curved --spline"}},
     // Five points cannot make cubic Bezier pieces sharing their ends: the last point, line 6.
     {.name = "BezierPointCount", .profile = "r,z\n0,0\n1,0\n1,1\n1,2\n0,2\n", .args = {"--spline", "bezier"},
@@ -602,9 +620,18 @@ const std::vector<BadInput> kBadInputs = {
     // Points 1 and 2 (lines 3 and 4) of a natural spline are equal: the chord between has no length.
     {.name = "NaturalSplineRepeatedPoint", .profile = "r,z\n0,0\n1,0\n1,0\n0,1\n", .args = {"--spline", "natural"},
      .message = {"@/p.csv:4: ", "repeats point 1"}},
+    // One Bezier piece from the axis to the axis, reaching r = 0.375: within 2 its polyline is the
+    // chord on the axis, which nothing hits.
+    {.name = "ToleranceCollapsingTheCurve", .profile = "r,z\n0,0\n0.5,0.2\n0.5,0.8\n0,1\n", .args = {"--spline", "bezier", "--tolerance", "2"},
+     .message = {"--tolerance: polyline tolerance 2 collapses the bezier spline onto the axis", "r = 0.375"}},
     {.name = "ToleranceBelowTheCurvesResolution", .args = {"--spline", "catmull-rom", "--tolerance", "1e-30"},
      .message = {"--tolerance", "2^-40"}},
-    {.name = "KajiyaForACurve", .args = {"--spline", "natural", "--method", "kajiya"}, .message = {"Kajiya", "polylines"}},
+    {.name = "KajiyaForACurve", .args = {"--spline", "natural", "--method", "kajiya"},
+     .message = {"--method kajiya: Kajiya's strip tree bounds polylines only", "--method mibit or linear, or --tolerance"}},
+    // r = (1 - 2u)^2 on the middle piece (points 2 to 4, lines 4 to 6): it touches the axis at u = 1/2,
+    // between the points the curve passes through.
+    {.name = "QuadraticTouchingTheAxisBetweenItsPoints", .profile = "r,z\n0,0\n0.5,0\n1,0\n-1,0.5\n1,1\n0.5,1\n0,1\n",
+     .args = {"--spline", "quadratic"}, .message = {"@/p.csv:4: ", "touches the axis", "at u = 0.5"}},
     {.name = "OutOptionMissing", .args = {"--profile", "@/p.csv", "--rays", "@/r.csv"}, .message = {"--out"},
      .usageError = true, .replaceFiles = true},
 };

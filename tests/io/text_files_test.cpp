@@ -747,6 +747,25 @@ TEST(OutputSet, AFailedRenamePutsBackTheOutputsAlreadyReplaced) {
   EXPECT_EQ(directory.entries(), (std::set<std::string>{"a.txt", "b.txt"}));
 }
 
+// A temporary that does not hold what its stream wrote (here shortened behind the stream's back, as
+// by a writer that ignores a failed write of its own) is refused before any rename.
+TEST(OutputSet, ATemporaryShorterThanItsStreamIsAFailedWriteAndNothingIsReplaced) {
+  const ScratchDirectory directory;
+  const std::string image = directory.write("image.png", "an existing image");
+  OutputSet outputs;
+  outputs.add("-o", image);
+  outputs.stream(image).write("a new image of 32 bytes, written");
+  std::fflush(outputs.stream(image).file());
+  std::string temporary;
+  for (const std::string& name : directory.entries()) {
+    if (name.rfind("image.png.tmp-", 0) == 0) temporary = directory / name;
+  }
+  ASSERT_FALSE(temporary.empty());
+  std::filesystem::resize_file(temporary, 4);
+  EXPECT_EQ(errorOf([&] { outputs.commit(); }), image + ": write failed: the file holds 4 of the 32 bytes written");
+  EXPECT_EQ(readWholeFile(image), "an existing image");
+}
+
 // An injected writer on a full device: /dev/full fails every write with ENOSPC.
 TEST(OutputStream, AFullDiskIsOneErrorNamingTheOutputAtTheFirstFailedWrite) {
   std::FILE* full = std::fopen("/dev/full", "w");

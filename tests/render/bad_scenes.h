@@ -99,6 +99,16 @@ inline std::vector<BadCase> badCases() {
        "scene.json: objects[1].scale[0]: 1e-20 is out of range: scale factors lie in [2^-16, 2^40]"},
       {"ScalesTooUnequal", replaced(kScene, R"("scale": 0.5)", R"("scale": [100, 100, 1e-3])"), {},
        "objects[1].scale: the scale factors differ by a factor 1e+05: they lie within a factor 2^16 (65536) of each other"},
+      // Every digit of a ratio just beyond the limit, which three digits would round to within it.
+      {"ScalesJustTooUnequal", replaced(kScene, R"("scale": 0.5)", R"("scale": [65537, 1, 1])"), {},
+       "objects[1].scale: the scale factors differ by a factor 65537: they lie within a factor 2^16 (65536) of each other"},
+      // A name reaches one-line messages (warnings, refusals, --pick): a newline in it would break the line.
+      {"ObjectNameWithANewline", replaced(kScene, R"({"profile": "ball", "material": "white"})",
+                                          R"({"profile": "ball", "material": "white", "name": "glass\n1"})"),
+       {}, "scene.json: objects[0].name: the name \"glass?1\" holds a control character (byte 0x0A)", kBottleCsv, true},
+      {"MaterialNameWithATab", replaced(replaced(kScene, R"("white": {"type")", R"("wh\tite": {"type")"), R"("material": "white"})",
+                                        R"("material": "wh\tite"})"),
+       {}, "scene.json: materials.wh?ite: the name \"wh?ite\" holds a control character (byte 0x09)"},
       {"HugeScale", replaced(kScene, R"("scale": 0.5)", R"("scale": 1e13)"), {}, "objects[1].scale: 1e+13 is out of range: scale factors lie in"},
       // Within the scale range, but the bottle (1 tall, turned 10 degrees) then reaches 1.13e12.
       {"ObjectReachesBeyondTheLimit", replaced(kScene, R"("scale": 0.5)", R"("scale": 1.09e12)"), {},
@@ -118,6 +128,12 @@ inline std::vector<BadCase> badCases() {
        "profiles.ball.tolerance: applies to a curved \"spline\""},
       {"ToleranceNotPositive", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "natural", "tolerance": 0, )"), {},
        "profiles.ball.tolerance: 0 is out of range: a tolerance is > 0"},
+      // The ball as one Bezier piece from the axis to the axis: within 10 its polyline is the chord on
+      // the axis, a surface of no area; the same rule as --tolerance's below.
+      {"ToleranceCollapsesTheCurve", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", "tolerance": 10, )"), {},
+       "scene.json: profiles.ball.tolerance: polyline tolerance 10 collapses the bezier spline onto the axis: every point of its "
+       "polyline has r = 0, a surface of no area that nothing hits, where the curve reaches r = 0.375; a tolerance below that keeps "
+       "the polyline off the axis"},
       {"ToleranceBelowResolution", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "natural", "tolerance": 1e-30, )"), {},
        "profiles.ball.tolerance: polyline tolerance 1e-30 is below 2^-40"},
       {"BezierPointCount", replaced(replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"), "[0, 1]]", "[0.2, 1], [0, 1]]"), {},
@@ -127,19 +143,52 @@ inline std::vector<BadCase> badCases() {
        "profiles.ball.points[0]: the piece from spline point 0", kBottleCsv, true},
       {"CsvSpline", replaced(kScene, R"("bottle": {"csv")", R"("bottle": {"spline": "catmull-rom", "csv")"), {},
        "profiles.bottle.csv: bottle.csv:4: spline point 2", "r,z\n0,0\n0.3,0\n0.3,0\n0,1\n"},
-      {"ToleranceNotANumber", kScene, {"--tolerance", "fine"}, R"(--tolerance "fine": expected "pixel" or a number > 0)", kBottleCsv, true},
+      {"ToleranceNotANumber", kScene, {"--tolerance", "fine"},
+       R"(--tolerance: "fine" is neither "pixel" nor a finite number > 0 (a distance in each profile's units) (see --help))", kBottleCsv, true},
+      {"ToleranceNaN", kScene, {"--tolerance", "nan"}, R"(--tolerance: "nan" is neither "pixel" nor a finite number > 0)", kBottleCsv, true},
+      {"ToleranceZero", kScene, {"--tolerance", "0"}, R"(--tolerance: "0" is neither "pixel" nor a finite number > 0)", kBottleCsv, true},
+      {"ToleranceEmpty", kScene, {"--tolerance", ""}, R"(--tolerance: "" is neither "pixel" nor a finite number > 0)", kBottleCsv, true},
+      // Kajiya's strip tree bounds polylines: a curve traced exactly is refused naming its profile
+      // and what works instead.
+      {"KajiyaOnACurve", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"), {"--geometry", "kajiya"},
+       "scene.json: profiles.ball: a bezier spline, traced exactly: --geometry kajiya cannot trace it (Kajiya's strip tree bounds "
+       "polylines only); use --geometry mibit or linear, or --tolerance to trace it as a polyline",
+       kBottleCsv, true},
+      // The spline's quadratic middle piece has r = (1 - 2u)^2: it touches the axis between its points.
+      {"QuadraticTouchingTheAxis", replaced(kScene, R"("ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]})",
+                                            R"("ball": {"spline": "quadratic", "points": [[0, 0], [0.5, 0], [1, 0], [-1, 0.5], [1, 1], [0.5, 1], [0, 1]]})"),
+       {}, "scene.json: profiles.ball.points[2]: the piece from spline point 2 (r = 1, z = 0) to spline point 4 (r = 1, z = 1) touches the axis"},
+      {"ToleranceCollapsesTheCurveFromTheCommandLine", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"),
+       {"--tolerance", "10"},
+       "--tolerance: profiles.ball: polyline tolerance 10 collapses the bezier spline onto the axis: every point of its polyline "
+       "has r = 0",
+       kBottleCsv, true},
       {"ToleranceBelowTheCurvesResolution", replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"), {"--tolerance", "1e-30"},
-       R"(--tolerance: profile "ball": polyline tolerance 1e-30 is below 2^-40)", kBottleCsv, true},
+       R"(--tolerance: profiles.ball: polyline tolerance 1e-30 is below 2^-40)", kBottleCsv, true},
       {"UnknownImageExtension", kScene, {"-o", "out.jpg"}, R"(out.jpg: unsupported image extension ".jpg")", kBottleCsv, true},
       {"UnwritableStats", kScene, {"--stats", "no/such/stats.json"}, "no/such/stats.json: cannot create a file", kBottleCsv, true},
       // Embree's linear cone curve: a flat step between two cones, and a scaled instance.
       {"EmbreeConeCannotExpressAStep", replaced(kScene, "[0.5, 0.8], [0, 1]", "[0.5, 0.8], [0.3, 0.8], [0.3, 1], [0, 1]"),
        {"--geometry", "embree-cone"},
-       "object 0 (profile \"ball\") cannot be traced as Embree's linear cone curve: the segment from profile point 2 "
+       "scene.json: objects[0] (profiles.ball) cannot be traced as Embree's linear cone curve: the segment from profile point 2 "
        "(r = 0.5, z = 0.8) to profile point 3 (r = 0.3, z = 0.8) is horizontal",
        kBottleCsv, true},
+      // A curve with a flat ring traced as its polyline: the points named are the polyline's.
+      {"EmbreeConeCannotExpressACurvesRing",
+       replaced(kScene, R"("ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]})",
+                R"("ball": {"spline": "bezier", "points": [[0, 0], [0.4, 0], [0.5, 0.2], [0.5, 0.4], [0.45, 0.4], [0.35, 0.4], )"
+                R"([0.3, 0.4], [0.3, 0.7], [0.2, 1], [0, 1]]})"),
+       {"--geometry", "embree-cone", "--tolerance", "0.01"},
+       "scene.json: objects[0] (profiles.ball, a curve traced as its polyline within 0.01) cannot be traced as Embree's linear "
+       "cone curve: the segment from polyline point "},
+      // The POV-Ray export's warnings come only with the file: a run that fails after exporting (here
+      // on a profile the cone curve cannot express) prints its one line, not the warnings first.
+      {"FailureAfterAnExportWithWarnings",
+       replaced(replaced(kScene, "[0.5, 0.8], [0, 1]", "[0.5, 0.8], [0.3, 0.8], [0.3, 1], [0, 1]"),
+                R"({"type": "diffuse", "color": [0.8, 0.8, 0.8]})", R"({"type": "metal", "color": [0.8, 0.8, 0.8], "roughness": 0.3})"),
+       {"--export-pov", "scene.pov", "--geometry", "embree-cone"}, "cannot be traced as Embree's linear cone curve", kBottleCsv, true},
       {"EmbreeConeScaledObject", kScene, {"--geometry", "embree-cone"},
-       "object 1 (profile \"bottle\") is scaled by (0.5, 0.5, 0.5): Embree's linear cone curve kernel assumes unit ray "
+       "scene.json: objects[1] (profiles.bottle) is scaled by (0.5, 0.5, 0.5): Embree's linear cone curve kernel assumes unit ray "
        "directions",
        kBottleCsv, true},
       {"PovExportName", kScene, {"--export-pov", "scene.txt"}, "scene.txt: --export-pov writes POV-Ray scene files, named .pov",

@@ -41,7 +41,10 @@ Count countOnMany(bool regularize) {
 
   // Through the EXR, as a user counts them.
   const std::string exr = (std::filesystem::temp_directory_path() / ("revolve-fireflies-" + std::to_string(getpid()) + ".exr")).string();
-  render::writeImage(exr, exr, result.image);
+  io::writeFileAtomically(exr, [&](std::FILE* file) {
+    io::OutputStream out(file, exr);
+    render::writeImage(out, exr, result.image);
+  });
   OIIO::ImageBuf image(exr);
   std::vector<float> pixels(result.image.pixels.size());
   const bool read = image.read(0, 0, true, OIIO::TypeDesc::FLOAT) &&

@@ -57,7 +57,7 @@ class ProfileError : public std::invalid_argument {
     outOfRange,       // a coordinate beyond kMaxCoordinate, or an extent below kMinExtent
     segmentTooShort,  // a segment shorter than kMinSegmentFraction of the profile's extent
     badPointCount,    // a spline whose point count its kind cannot take (2n + 1, 3n + 1)
-    crossesAxis,      // a spline whose curve reaches r < 0 between the points it passes through
+    crossesAxis,      // a spline whose curve reaches r <= 0 between the points it passes through
   };
   ProfileError(Rule rule, std::size_t index, const std::string& message)
       : std::invalid_argument(message), rule_(rule), index_(index) {}
@@ -98,14 +98,16 @@ class Profile {
   // and profiles that are not monotone in z are all valid.
   explicit Profile(std::span<const Point2> points);
 
-  // The fewest points on `curve` whose polyline stays within `tolerance` of it: from each point,
-  // the chord reaching farthest along the curve whose largest distance from the arc it replaces
-  // (computed exactly, piece by piece, from the cubics) is within the tolerance. Adaptive in
-  // curvature: a straight run gets no point between its ends, and a chord may span a smooth join;
-  // the ends and every corner (a join where the tangent turns) are kept as vertices. A linear
-  // spline gives its own points. Throws
-  // std::invalid_argument unless tolerance > 0 and finite, and ProfileError when the polyline
-  // itself is not a valid profile (a tolerance wider than a gap between two parts of the curve).
+  // Points on `curve` whose polyline stays within `tolerance` of it: from each point, the chord
+  // reaching farthest along the curve whose largest distance from the arc it replaces (computed
+  // exactly, piece by piece, from the cubics) is within the tolerance. Adaptive in curvature: a
+  // straight run gets no point between its ends, and a chord may span a smooth join; the ends and
+  // every corner (a join where the tangent turns) are kept as vertices. Where two chords would cross
+  // or touch (a tolerance wider than the gap between two parts of the curve: a thin rim, a stem in
+  // a foot), both are split along their arcs until none does, so the result is always a valid
+  // profile within the tolerance. A linear spline gives its own points. curveParameters() records
+  // where each point lies on the curve. Throws std::invalid_argument unless tolerance > 0 and
+  // finite and at least 2^-40 of the curve's extent (double-precision chords resolve no finer).
   static Profile fromCurve(const Spline& curve, double tolerance);
 
   std::span<const Point2> points() const noexcept { return points_; }
@@ -116,6 +118,9 @@ class Profile {
   std::span<const double> arcLength() const noexcept { return arcLength_; }
   // Index in the caller's input of each kept point.
   std::span<const std::size_t> sourceIndex() const noexcept { return sourceIndex_; }
+  // For a profile made by fromCurve from a curved spline: where each point lies on the curve, as
+  // T = k + u (the point is curve.at(k, u); T = pieceCount() is the curve's end). Empty otherwise.
+  std::span<const double> curveParameters() const noexcept { return curveParameters_; }
   const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
 
  private:
@@ -124,6 +129,7 @@ class Profile {
   std::vector<Point2> points_;
   std::vector<double> arcLength_;
   std::vector<std::size_t> sourceIndex_;
+  std::vector<double> curveParameters_;
   std::vector<ProfileWarning> warnings_;
   bool closed_ = false;
 
@@ -170,8 +176,9 @@ class Spline {
   // a point count the kind cannot take (linear, catmull-rom and natural need at least 2 points,
   // quadratic 2n + 1 >= 3, bezier 3n + 1 >= 4); a non-finite coordinate; a coordinate or extent
   // outside Profile's range; r < 0 at a point the curve passes through (Bezier control points off
-  // the curve may have r < 0); a curve that reaches r < 0 anywhere (crossesAxis: it may touch the
-  // axis only at a point it passes through); two equal consecutive points of catmull-rom or
+  // the curve may have r < 0); a curve that reaches r < 0 anywhere, or r = 0 between the points
+  // it passes through (crossesAxis: it may touch the axis only at a point it passes through,
+  // where a part of the curve ends exactly on it); two equal consecutive points of catmull-rom or
   // natural (their chord has no length to parametrise); a piece with all its points equal, or
   // shorter than Profile::kMinSegmentFraction of the extent; a curve that crosses or touches itself
   // (checked conservatively on the pieces' control hulls: see below); more than kMaxPoints points.
@@ -368,6 +375,14 @@ class ShadingNormals {
   // flat shading; 180: nothing is).
   ShadingNormals(const Profile& profile, double creaseDegrees);
 
+  // The curve's own normals, for a polyline made from `curve` by Profile::fromCurve: a hit on a
+  // segment stands for the point of the segment's arc whose projection on the segment is the hit's
+  // (found from v by safeguarded Newton steps on the cubic), and shades with the curve's normal
+  // there. A coarse polyline then shades as the curve does: no interpolation between chords, and
+  // no creases but the curve's own corners. Throws std::invalid_argument unless `polyline`'s
+  // curveParameters() place its points on `curve`.
+  ShadingNormals(const Profile& polyline, const Spline& curve);
+
   // Unit object-space shading normal at a hit on `segment` (Embree's primID) with surface
   // parameters u, v (see Conventions; v is clamped to the segment). The azimuth comes from u, not
   // from a normal, so discs (whose geometric normal is the axis) shade right too. Precondition:
@@ -383,6 +398,11 @@ class ShadingNormals {
   };
   std::vector<Meridian> startNormal_, endNormal_;  // at each segment's first and second point
   std::vector<double> segmentStart_, segmentLength_;  // in units of the total arc length
+  // From a curve: each point's place on it (Profile::curveParameters) and its cubic pieces'
+  // control points; empty for normals interpolated along the polyline.
+  std::vector<double> curveParameter_;
+  std::vector<Point2> vertex_, bezier_;
+  Meridian curveNormal(std::uint32_t segment, double s) const noexcept;
 };
 
 // ---------------------------------------------------------------------------------------------

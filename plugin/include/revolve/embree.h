@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace revolve {
@@ -105,9 +106,10 @@ double tessellationError(const Profile& profile, std::uint32_t slices);
 // point on the axis between segments are fine. Embree's Ng points away from the axis on the cones
 // and away from its cone on a disc, whichever side the solid lies on.
 //
-// Why `profile` cannot be traced as one linear cone curve, naming the points concerned; nothing
-// when it can.
-std::optional<std::string> coneCurveLimitation(const Profile& profile);
+// Why `profile` cannot be traced as one linear cone curve, naming the points concerned ("profile
+// point 3 (r = .., z = ..)"); nothing when it can. `pointName` is what the reason calls a point:
+// "polyline point" suits a profile made by Profile::fromCurve, whose points are not the curve's.
+std::optional<std::string> coneCurveLimitation(const Profile& profile, std::string_view pointName = "profile point");
 
 class ConeCurveGeometry {
  public:

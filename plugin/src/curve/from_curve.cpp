@@ -3,12 +3,15 @@
 #include <revolve/core.h>
 
 #include "curve/cubic.h"
+#include "profile/self_intersection.h"
 #include "util/format.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 namespace revolve {
 namespace {
@@ -161,7 +164,7 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
     if (walk.cornerAt(k)) corners.push_back(double(k));
   }
   corners.push_back(last);
-  std::vector<Point2> points{walk.at(0.0)};
+  std::vector<double> parameters{0.0};  // each point's place on the curve, T = piece + u
   double T = 0.0;
   std::size_t nextCorner = 0;
   while (T < last) {
@@ -193,19 +196,72 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
       }
       T = good;
     }
-    points.push_back(walk.at(T));
-    if (points.size() > kMaxPoints) {
+    parameters.push_back(T);
+    if (parameters.size() > kMaxPoints) {
       throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + " needs more than " +
                                   std::to_string(kMaxPoints) + " points");
     }
   }
-  try {
-    return Profile(points);
-  } catch (const ProfileError& error) {
-    throw ProfileError(error.rule(), 0,
-                       "the polyline within " + detail::formatNumber(tolerance) + " of the " + splineKindName(curve.kind()) +
-                           " spline is not a valid profile (" + error.what() + "); use a smaller tolerance");
+
+  // Chords within the tolerance of their arcs may still cross or touch one another where two parts
+  // of the curve pass closer than twice the tolerance (a thin rim, a stem inside a foot), though
+  // the curve itself does not (Spline refuses that). Both chords of such a pair are split at the
+  // middle of their arcs, and each half further until it is within the tolerance again, until no
+  // pair is left: halving an arc's parameter range brings its chord towards it, so this ends once
+  // the chords there lie closer to the curve than its two parts lie to each other.
+  const auto pointsOf = [&] {
+    std::vector<Point2> points;
+    points.reserve(parameters.size());
+    for (const double t : parameters) points.push_back(walk.at(t));
+    return points;
+  };
+  std::vector<Point2> points = pointsOf();
+  // Appends the parameters strictly between `from` and `to` that cut the arc into chords within
+  // the tolerance, its middle always among them.
+  const auto refine = [&](auto&& self, double from, double to, std::vector<double>& out) -> void {
+    const double middle = 0.5 * (from + to);
+    if (!(middle > from && middle < to)) return;  // a parameter range at its resolution
+    if (walk.chordError(from, middle) > tolerance) self(self, from, middle, out);
+    out.push_back(middle);
+    if (walk.chordError(middle, to) > tolerance) self(self, middle, to, out);
+  };
+  // Profile refuses segments shorter than this (measured on its points' extent, at most the
+  // control points' one): consecutive points closer together are one vertex.
+  const double shortest = extent * kMinSegmentFraction;
+  for (;;) {
+    std::vector<double> kept{parameters.front()};
+    std::vector<Point2> keptPoints{points.front()};
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      if (!(std::hypot(points[i].r - keptPoints.back().r, points[i].z - keptPoints.back().z) < shortest)) {
+        kept.push_back(parameters[i]);
+        keptPoints.push_back(points[i]);
+      } else if (i + 1 == points.size() && keptPoints.size() > 1) {
+        kept.back() = parameters[i];  // the curve's end stays; the point just before it goes
+        keptPoints.back() = points[i];
+      }
+    }
+    parameters = std::move(kept);
+    points = std::move(keptPoints);
+    const std::optional<detail::SegmentPair> pair = points.size() >= 2 ? detail::findSelfIntersection(points) : std::nullopt;
+    if (!pair) break;
+    std::vector<double> refined;
+    refined.reserve(parameters.size() + 8);
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+      refined.push_back(parameters[i]);
+      if (i == pair->first || i == pair->second) refine(refine, parameters[i], parameters[i + 1], refined);
+    }
+    if (refined.size() == parameters.size()) break;  // nothing left to split: Profile reports the pair
+    if (refined.size() > kMaxPoints) {
+      throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + " needs more than " +
+                                  std::to_string(kMaxPoints) + " points");
+    }
+    parameters = std::move(refined);
+    points = pointsOf();
   }
+  Profile polyline(points);
+  polyline.curveParameters_.reserve(polyline.points().size());
+  for (const std::size_t i : polyline.sourceIndex()) polyline.curveParameters_.push_back(parameters[i]);
+  return polyline;
 }
 
 }  // namespace revolve

@@ -7,6 +7,7 @@
 #include "curve/monotone_parts.h"
 #include "curve/spline_pieces.h"
 #include "util/format.h"
+#include "util/rounding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -170,12 +171,19 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r};
     double turns[2];
     for (int k = 0, count = detail::derivativeSignChanges(r, turns); k < count; ++k) {
+      // Between the points it passes through the curve must stay off the axis: r = 0 at a turn of r
+      // inside a piece is a touch, which the rule refuses as it refuses a crossing. r(u) is known
+      // within de Casteljau's rounding, 8 u max |r_i| (three levels of convex combinations): a
+      // minimum no farther from the axis than that cannot be told from a touch.
       const double radius = detail::cubicAt(r, turns[k]);
-      if (radius < 0.0) {
+      const double rounding = 8.0 * detail::kUnitRoundoff * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
+      if (radius <= rounding) {
         throw ProfileError(ProfileError::Rule::crossesAxis, pieceStart_[i],
-                           describePiece(i) + " crosses the axis: r = " + formatNumber(radius) + " at u = " +
+                           describePiece(i) + (radius < 0.0 ? " crosses the axis: r = " : " touches the axis: r = ") +
+                               formatNumber(radius) + (radius < 0.0 ? "" : " (zero within rounding)") + " at u = " +
                                formatNumber(turns[k]) +
-                               "; the curve must keep r >= 0 (it may touch the axis only at a point it passes through)");
+                               "; the curve must keep r > 0 between the points it passes through (it may reach the axis "
+                               "only at such a point)");
       }
     }
   }

@@ -10,16 +10,16 @@ namespace {
 
 class Describer {
  public:
-  explicit Describer(const Profile& profile) : profile_(profile) {}
+  Describer(const Profile& profile, std::string_view pointName) : profile_(profile), pointName_(pointName) {}
   std::string point(std::size_t k) const {
     const Point2 p = profile_.points()[k];
-    return "profile point " + std::to_string(profile_.sourceIndex()[k]) + " (r = " + formatNumber(p.r) +
-           ", z = " + formatNumber(p.z) + ")";
+    return pointName_ + " " + std::to_string(profile_.sourceIndex()[k]) + " (r = " + formatNumber(p.r) + ", z = " + formatNumber(p.z) + ")";
   }
   std::string segment(std::size_t k) const { return "the segment from " + point(k) + " to " + point(k + 1); }
 
  private:
   const Profile& profile_;
+  std::string pointName_;
 };
 
 void appendVertex(std::vector<float>& vertices, Point2 p) {
@@ -28,10 +28,10 @@ void appendVertex(std::vector<float>& vertices, Point2 p) {
 
 }  // namespace
 
-std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile) {
+std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile, std::string_view pointName) {
   const std::span<const Point2> p = profile.points();
   const std::size_t n = p.size();
-  const Describer describe(profile);
+  const Describer describe(profile, pointName);
   // Embree's vertices are floats: a segment whose two heights round to the same float is a disc
   // to Embree, whatever it is in double.
   const auto horizontal = [&](std::size_t k) { return float(p[k].z) == float(p[k + 1].z); };

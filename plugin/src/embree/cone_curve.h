@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -34,6 +35,6 @@ struct ConeCurveLayout {
 };
 
 // The layout, or why the profile cannot be one linear cone curve (naming the points concerned).
-std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile);
+std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile, std::string_view pointName = "profile point");
 
 }  // namespace revolve::detail

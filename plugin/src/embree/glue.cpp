@@ -181,8 +181,8 @@ RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std
   return geometry;
 }
 
-std::optional<std::string> coneCurveLimitation(const Profile& profile) {
-  auto layout = detail::layOutConeCurve(profile);
+std::optional<std::string> coneCurveLimitation(const Profile& profile, std::string_view pointName) {
+  auto layout = detail::layOutConeCurve(profile, pointName);
   if (auto* reason = std::get_if<std::string>(&layout)) return std::move(*reason);
   return std::nullopt;
 }

@@ -360,7 +360,10 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
       const double radius = u == 0.0 ? p0.r : cubicAt(part.r, u);
       const double R2 = radius * radius;
       const Quadratic g{ray.a * ray.a, 0.0, ray.cross * ray.cross - ray.a * R2};
-      const Roots roots = bracketedRoots<kFirstOnly>(g, lo - ray.sAxis, hi - ray.sAxis, ray.rho2At(lo) < R2, ray.rho2At(hi) <= R2);
+      // As for segments: an end exactly on the circle (tnear or tfar) is a hit, entering or leaving.
+      const double rho2Lo = ray.rho2At(lo), rho2Hi = ray.rho2At(hi);
+      const Roots roots = bracketedRoots<kFirstOnly>(g, lo - ray.sAxis, hi - ray.sAxis, rho2Lo < R2, rho2Hi < R2,
+                                                     EndsOnSurface{rho2Lo == R2, rho2Hi == R2});
       for (int i = 0; i < roots.count; ++i) hits.s[hits.count] = std::clamp(ray.sAxis + roots.x[i], lo, hi), hits.u[hits.count++] = u;
       hits.solved = true;
     }

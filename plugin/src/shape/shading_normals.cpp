@@ -1,6 +1,8 @@
 // Smooth shading normals from per-vertex normals along the profile (see revolve.h, ShadingNormals).
 #include <revolve/core.h>
 
+#include "curve/cubic.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -103,8 +105,90 @@ ShadingNormals::ShadingNormals(const Profile& profile, double creaseDegrees) {
   }
 }
 
+ShadingNormals::ShadingNormals(const Profile& polyline, const Spline& curve) : ShadingNormals(polyline, 180.0) {
+  const std::span<const double> T = polyline.curveParameters();
+  const std::span<const Point2> p = polyline.points();
+  if (T.size() != p.size()) {
+    throw std::invalid_argument("curve shading normals: the polyline was not made by Profile::fromCurve (it records no curve parameters)");
+  }
+  const double pieces = double(curve.pieceCount());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    // fromCurve places point i at exactly this evaluation of the curve.
+    const std::size_t k = T[i] >= pieces ? curve.pieceCount() - 1 : std::size_t(T[i]);
+    const Point2 on = curve.at(k, T[i] >= pieces ? 1.0 : T[i] - double(k));
+    if (!(T[i] >= 0.0 && T[i] <= pieces) || on.r != p[i].r || on.z != p[i].z) {
+      throw std::invalid_argument("curve shading normals: point " + std::to_string(i) + " of the polyline does not lie on the " +
+                                  splineKindName(curve.kind()) + " spline at its recorded parameter (made from another curve?)");
+    }
+  }
+  curveParameter_.assign(T.begin(), T.end());
+  vertex_.assign(p.begin(), p.end());
+  bezier_.assign(curve.bezier().begin(), curve.bezier().end());
+}
+
+// The curve's normal at the point of segment `segment`'s arc that projects onto the segment at
+// fraction s of its length: the root of ((c(T) - a) . e) / |e|^2 = s, between the segment's end
+// parameters, by Newton steps kept inside a bisection bracket (Press et al.'s rtsafe). Where the arc
+// is a graph over its chord (the usual case: fromCurve's chords follow their arcs) the projection
+// is monotone and the root unique. Newton converges in a few steps on the smooth cubic; the loop
+// stops when a step moves T by less than 2^-30 of the segment's range (s comes from a float v, a
+// few 2^-24 of the whole profile), or after 24 steps.
+ShadingNormals::Meridian ShadingNormals::curveNormal(std::uint32_t segment, double s) const noexcept {
+  const double T0 = curveParameter_[segment], T1 = curveParameter_[segment + 1];
+  const Point2 a = vertex_[segment], b = vertex_[segment + 1];
+  const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez;
+  // The arc's pieces: a segment never spans a corner, but may end exactly on a join, where the
+  // piece it belongs to is the one before the join (its end) or after it (its start).
+  const double pieces = double((bezier_.size() - 1) / 3);
+  const double firstPiece = std::min(std::floor(T0), pieces - 1.0), lastPiece = std::max(std::ceil(T1) - 1.0, firstPiece);
+  const auto cubic = [&](double T, double r[4], double z[4], double& u) {
+    const double k = std::clamp(std::floor(T), firstPiece, lastPiece);
+    u = T - k;
+    const Point2* c = &bezier_[3 * std::size_t(k)];
+    for (int i = 0; i < 4; ++i) r[i] = c[i].r, z[i] = c[i].z;
+  };
+  double lo = T0, hi = T1, T = T0 + s * (T1 - T0);
+  for (int step = 0; step < 24 && hi > lo; ++step) {
+    double r[4], z[4], u, pr, dr, pz, dz;
+    cubic(T, r, z, u);
+    detail::cubicWithDerivative(r, u, pr, dr);
+    detail::cubicWithDerivative(z, u, pz, dz);
+    const double f = ((pr - a.r) * er + (pz - a.z) * ez) / length2 - s, df = (dr * er + dz * ez) / length2;
+    if (f == 0.0) break;
+    (f < 0.0 ? lo : hi) = T;
+    const double next = T - f / df;
+    const double moved = std::abs((next > lo && next < hi ? next : 0.5 * (lo + hi)) - T);
+    T = next > lo && next < hi ? next : 0.5 * (lo + hi);
+    if (moved <= 0x1p-30 * (T1 - T0)) break;
+  }
+  double r[4], z[4], u;
+  cubic(T, r, z, u);
+  double tr = detail::cubicDerivative(r, u), tz = detail::cubicDerivative(z, u);
+  if (tr == 0.0 && tz == 0.0) {
+    // At an end of a piece with a repeated control point (Spline refuses cusps): the tangent's
+    // limit there is the next distinct control point's direction, or the chord's.
+    const int from = u <= 0.5 ? 0 : 1, to = u <= 0.5 ? 2 : 3;
+    tr = r[to] - r[from], tz = z[to] - z[from];
+    if (tr == 0.0 && tz == 0.0) tr = er, tz = ez;
+  }
+  const double norm = std::hypot(tr, tz);
+  const Meridian n{tz / norm, -tr / norm};  // right of the direction of travel, as Ng
+  // On Ng's side, as every shading normal: an arc turning back past a right angle from its chord
+  // (which fromCurve bounds by its hull, not its tangent) shades with the chord's own normal there.
+  if (!(n.r * ez - n.z * er > 0.0)) {
+    const double chord = std::sqrt(length2);
+    return {ez / chord, -er / chord};
+  }
+  return n;
+}
+
 Vec3 ShadingNormals::normal(std::uint32_t segment, float u, float v) const noexcept {
   const double s = std::clamp((double(v) - segmentStart_[segment]) / segmentLength_[segment], 0.0, 1.0);
+  if (!curveParameter_.empty()) {
+    const Meridian n = curveNormal(segment, s);
+    const double phi = 2.0 * std::numbers::pi * double(u);
+    return {float(n.r * std::cos(phi)), float(n.r * std::sin(phi)), float(n.z)};
+  }
   const Meridian a = startNormal_[segment], b = endNormal_[segment];
   // Each end normal lies within 90 degrees of the face's (a positive blend of two face normals
   // that are not opposite), so the blend never vanishes; the guard keeps that true under rounding.
@@ -117,7 +201,8 @@ Vec3 ShadingNormals::normal(std::uint32_t segment, float u, float v) const noexc
 
 std::size_t ShadingNormals::memoryBytes() const noexcept {
   return (startNormal_.capacity() + endNormal_.capacity()) * sizeof(Meridian) +
-         (segmentStart_.capacity() + segmentLength_.capacity()) * sizeof(double);
+         (segmentStart_.capacity() + segmentLength_.capacity() + curveParameter_.capacity()) * sizeof(double) +
+         (vertex_.capacity() + bezier_.capacity()) * sizeof(Point2);
 }
 
 }  // namespace revolve

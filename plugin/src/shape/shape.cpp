@@ -103,7 +103,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     return;
   }
   if (options.method == Method::kajiya) {
-    throw std::invalid_argument("Kajiya's strip tree bounds polylines only: a spline shape takes Method::mibit or Method::linear");
+    throw std::invalid_argument("Kajiya's strip tree bounds polylines only: a curve traced exactly needs the MIBIT search or the linear scan");
   }
   double extent = 0.0;
   for (const Point2& p : curve.bezier()) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
