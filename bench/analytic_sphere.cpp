@@ -40,9 +40,8 @@ struct Lane {
 };
 
 Lane laneOf(RTCRayN* rays, unsigned N, unsigned i) {
-  return {RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i),
-          RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i),
-          RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i)};
+  return {RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i), RTCRayN_dir_x(rays, N, i),
+          RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i), RTCRayN_tnear(rays, N, i), RTCRayN_tfar(rays, N, i)};
 }
 
 void sphereIntersect(const RTCIntersectFunctionNArguments* args) {

@@ -38,15 +38,17 @@ namespace {
 using namespace revolve;
 using namespace revolve::bench;
 
-constexpr int kCameraSide = 32;               // camera rays: 32 x 32, in packets of 8
-constexpr std::uint64_t kSeed = 20011001;     // the incoherent rays' seed
-constexpr double kSplineError = 1e-9;         // the spline's distance from the profile, relative
+constexpr int kCameraSide = 32;            // camera rays: 32 x 32, in packets of 8
+constexpr std::uint64_t kSeed = 20011001;  // the incoherent rays' seed
+constexpr double kSplineError = 1e-9;      // the spline's distance from the profile, relative
 const char* const kHeader = "shape,method,query,ray,hit,t,ng_x,ng_y,ng_z,prim,u,v";
 
 // The methods whose answers are revolve's own (compared bit for bit) and Embree's (measured).
 std::vector<MethodConfig> methods() {
-  return {{MethodKind::mibit, ShellKind::cylinder, 64},   {MethodKind::mibit, ShellKind::cylinder, 1024},
-          {MethodKind::spline},                           {MethodKind::mesh, ShellKind::cylinder, 64, 64},
+  return {{MethodKind::mibit, ShellKind::cylinder, 64},
+          {MethodKind::mibit, ShellKind::cylinder, 1024},
+          {MethodKind::spline},
+          {MethodKind::mesh, ShellKind::cylinder, 64, 64},
           {MethodKind::embreeCone, ShellKind::cylinder, 64}};
 }
 bool revolvesOwn(const std::string& method) { return method.rfind("mibit", 0) == 0 || method.rfind("spline", 0) == 0; }
@@ -60,7 +62,8 @@ void writeHit(std::FILE* out, const std::string& prefix, std::size_t index, cons
                double(rh.hit.Ng_y), double(rh.hit.Ng_z), rh.hit.primID, double(rh.hit.u), double(rh.hit.v));
 }
 
-void writeShape(std::FILE* out, RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, std::size_t rays) {
+void writeShape(std::FILE* out, RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile,
+                std::size_t rays) {
   const SmoothProfile::Extent e = profile.extent();
   const Box box{{-e.rMax, -e.rMax, e.zLow}, {e.rMax, e.rMax, e.zHigh}};
   const std::vector<Ray> incoherent = incoherentRays(box, rays, kSeed);
@@ -85,9 +88,12 @@ void writeShape(std::FILE* out, RTCDevice device, const MemoryMonitor& monitor, 
       alignas(32) RTCRayHit8 packet{};
       for (int lane = 0; lane < 8; ++lane) {
         const RTCRayHit one = app::embreeRayHit(camera[first + lane]);
-        packet.ray.org_x[lane] = one.ray.org_x, packet.ray.org_y[lane] = one.ray.org_y, packet.ray.org_z[lane] = one.ray.org_z;
-        packet.ray.dir_x[lane] = one.ray.dir_x, packet.ray.dir_y[lane] = one.ray.dir_y, packet.ray.dir_z[lane] = one.ray.dir_z;
-        packet.ray.tnear[lane] = one.ray.tnear, packet.ray.tfar[lane] = one.ray.tfar, packet.ray.mask[lane] = one.ray.mask;
+        packet.ray.org_x[lane] = one.ray.org_x, packet.ray.org_y[lane] = one.ray.org_y,
+        packet.ray.org_z[lane] = one.ray.org_z;
+        packet.ray.dir_x[lane] = one.ray.dir_x, packet.ray.dir_y[lane] = one.ray.dir_y,
+        packet.ray.dir_z[lane] = one.ray.dir_z;
+        packet.ray.tnear[lane] = one.ray.tnear, packet.ray.tfar[lane] = one.ray.tfar,
+        packet.ray.mask[lane] = one.ray.mask;
         packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       }
       query.intersect(valid, traced.scene(), packet);
@@ -120,13 +126,16 @@ std::map<std::string, Answer> readAnswers(const std::string& path) {
   std::size_t number = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (line.size() > 400) throw std::runtime_error(path + ":" + std::to_string(number) + ": a line longer than 400 characters");
+    if (line.size() > 400)
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": a line longer than 400 characters");
     if (number == 1) {
-      if (line != kHeader) throw std::runtime_error(path + ":1: not a revolve-embree-answers file (expected the header " + kHeader + ")");
+      if (line != kHeader)
+        throw std::runtime_error(path + ":1: not a revolve-embree-answers file (expected the header " + kHeader + ")");
       continue;
     }
     if (std::count(line.begin(), line.end(), ',') != 11) {
-      throw std::runtime_error(path + ":" + std::to_string(number) + ": not 12 comma-separated fields (" + kHeader + ")");
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": not 12 comma-separated fields (" + kHeader +
+                               ")");
     }
     std::size_t comma = 0;
     for (int i = 0; i < 4; ++i) comma = line.find(',', comma + (i > 0));
@@ -162,7 +171,8 @@ int compare(const std::string& pathA, const std::string& pathB) {
     if (answerA.hit != answerB.hit) ++tally.hitMiss;
     if (answerA.fields != answerB.fields) ++tally.differing;
     if (answerA.hit && answerB.hit) {
-      tally.maxRelativeT = std::max(tally.maxRelativeT, std::abs(answerA.t - answerB.t) / std::max(1.0, std::abs(answerA.t)));
+      tally.maxRelativeT =
+          std::max(tally.maxRelativeT, std::abs(answerA.t - answerB.t) / std::max(1.0, std::abs(answerA.t)));
     }
   }
   missing += b.size() > a.size() ? b.size() - a.size() : 0;
@@ -189,12 +199,15 @@ int main(int argc, char** argv) {
   std::size_t rays = 4000;
   CLI::App* write = cli.add_subcommand("write", "trace the rays and write every answer to OUT.csv");
   write->add_option("out", out, "the CSV to write")->required()->check(app::kNonEmpty);
-  write->add_option("--rays", rays, "incoherent rays a shape (default 4,000)")->check(app::wholeNumberIn<std::size_t>(1, 1000000));
-  CLI::App* comparison = cli.add_subcommand("compare", "compare two written files; status 1 when revolve's answers differ");
+  write->add_option("--rays", rays, "incoherent rays a shape (default 4,000)")
+      ->check(app::wholeNumberIn<std::size_t>(1, 1000000));
+  CLI::App* comparison =
+      cli.add_subcommand("compare", "compare two written files; status 1 when revolve's answers differ");
   comparison->add_option("a", a, "a CSV from one build")->required()->check(CLI::ExistingFile);
   comparison->add_option("b", b, "a CSV from the other build")->required()->check(CLI::ExistingFile);
   cli.require_subcommand(1);
-  if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-embree-answers")) return *status;
+  if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-embree-answers"))
+    return *status;
 
   if (comparison->parsed()) {
     int status = 1;

@@ -50,8 +50,10 @@ ErrorSummary measureErrors(RTCScene scene, const std::vector<Ray>& rays, const s
     result.residual = closest.distance / size;
     if (reference[i].hit) {
       const ReferenceHit& first = reference[i];
-      result.sheetOffset = std::abs((p[0] - first.point[0]) * first.normal[0] + (p[1] - first.point[1]) * first.normal[1] +
-                                    (p[2] - first.point[2]) * first.normal[2]) / size;
+      result.sheetOffset =
+          std::abs((p[0] - first.point[0]) * first.normal[0] + (p[1] - first.point[1]) * first.normal[1] +
+                   (p[2] - first.point[2]) * first.normal[2]) /
+          size;
     }
     const double rho = std::hypot(p[0], p[1]);
     const double c = rho > 0.0 ? p[0] / rho : 1.0, s = rho > 0.0 ? p[1] / rho : 0.0;

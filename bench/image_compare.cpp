@@ -17,8 +17,8 @@ namespace {
 
 float clamped(float value) { return std::clamp(value, 0.0f, 1.0f); }
 
-constexpr int kGap = 4;                    // pixels between the panels
-constexpr float kDifferenceScale = 4;      // the difference panel's gain
+constexpr int kGap = 4;                      // pixels between the panels
+constexpr float kDifferenceScale = 4;        // the difference panel's gain
 constexpr double kVisibleDifference = 0.05;  // linear; a few 8-bit sRGB steps in the mid-tones
 
 }  // namespace
@@ -54,8 +54,8 @@ ImageDifference compareImages(const render::Image& reference, const render::Imag
   return d;
 }
 
-void writeSideBySide(const std::string& path, const render::Image& reference, const render::Image& other, double exposure,
-                     const std::string& referenceLabel, const std::string& otherLabel) {
+void writeSideBySide(const std::string& path, const render::Image& reference, const render::Image& other,
+                     double exposure, const std::string& referenceLabel, const std::string& otherLabel) {
   const int w = reference.width, h = reference.height;
   render::Image combined;
   combined.width = 3 * w + 2 * kGap;
@@ -69,18 +69,20 @@ void writeSideBySide(const std::string& path, const render::Image& reference, co
         const std::size_t row = 3 * std::size_t(y) * combined.width;
         combined.pixels[row + 3 * std::size_t(x) + c] = a;
         combined.pixels[row + 3 * std::size_t(x + w + kGap) + c] = b;
-        combined.pixels[row + 3 * std::size_t(x + 2 * (w + kGap)) + c] = kDifferenceScale * std::abs(clamped(a) - clamped(b));
+        combined.pixels[row + 3 * std::size_t(x + 2 * (w + kGap)) + c] =
+            kDifferenceScale * std::abs(clamped(a) - clamped(b));
       }
     }
   }
   // Labels in the panels' top left corners, if the font is there; the figure is whole without them.
-  OIIO::ImageBuf buffer(OIIO::ImageSpec(combined.width, combined.height, 3, OIIO::TypeDesc::FLOAT), combined.pixels.data());
+  OIIO::ImageBuf buffer(OIIO::ImageSpec(combined.width, combined.height, 3, OIIO::TypeDesc::FLOAT),
+                        combined.pixels.data());
   const float white[3] = {1, 1, 1};
   const int size = std::clamp(h / 24, 10, 24);
   const std::string labels[3] = {referenceLabel, otherLabel, "|difference| x 4"};
   for (int panel = 0; panel < 3; ++panel) {
-    if (!OIIO::ImageBufAlgo::render_text(buffer, panel * (w + kGap) + size / 2, size + size / 3, labels[panel], size, "DejaVuSans",
-                                         white)) {
+    if (!OIIO::ImageBufAlgo::render_text(buffer, panel * (w + kGap) + size / 2, size + size / 3, labels[panel], size,
+                                         "DejaVuSans", white)) {
       std::fprintf(stderr, "revolve-bench: note: %s has no labels (%s)\n", path.c_str(), buffer.geterror().c_str());
       break;
     }

@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
   const std::vector<int> points = parsePoints(argv[2]);
   const int repetitions = std::atoi(argv[4]);
   const std::vector<SmoothProfile> shapes = testShapes();
-  const auto shape = std::find_if(shapes.begin(), shapes.end(), [&](const SmoothProfile& s) { return s.name() == shapeName; });
+  const auto shape =
+      std::find_if(shapes.begin(), shapes.end(), [&](const SmoothProfile& s) { return s.name() == shapeName; });
   if (shape == shapes.end() || points.empty() || repetitions < 1 || (mode != "incoherent" && mode != "camera8")) {
     std::fprintf(stderr, "%s: bad arguments (shapes: sphere torus vase goblet bottle)\n", argv[0]);
     return 2;
@@ -74,19 +75,22 @@ int main(int argc, char** argv) {
     const AnalyticSphere sphere{{0.0, 0.0, 0.5 * (e.zLow + e.zHigh)}, std::min(e.rMax, 0.5 * (e.zHigh - e.zLow))};
 
     std::vector<std::pair<std::string, std::unique_ptr<TracedScene>>> scenes;
-    scenes.emplace_back("sphere_primitive", std::make_unique<TracedScene>(device, monitor, *shape, MethodConfig{MethodKind::sphere}, sphere));
+    scenes.emplace_back("sphere_primitive", std::make_unique<TracedScene>(device, monitor, *shape,
+                                                                          MethodConfig{MethodKind::sphere}, sphere));
     for (int n : points) {
       MethodConfig config;
       config.kind = MethodKind::mibit;
       config.points = n;
-      scenes.emplace_back("mibit_" + std::to_string(n), std::make_unique<TracedScene>(device, monitor, *shape, config, sphere));
+      scenes.emplace_back("mibit_" + std::to_string(n),
+                          std::make_unique<TracedScene>(device, monitor, *shape, config, sphere));
     }
     // Interleaved: each repetition times every configuration once, so that a slow spell of the
     // machine falls on all of them.
     std::vector<std::vector<double>> nanoseconds(scenes.size());
     for (int r = 0; r < repetitions; ++r) {
       for (std::size_t i = 0; i < scenes.size(); ++i) {
-        auto batch = mode == "camera8" ? packetBatch(scenes[i].second->scene(), packets) : singleRayBatch(scenes[i].second->scene(), rays);
+        auto batch = mode == "camera8" ? packetBatch(scenes[i].second->scene(), packets)
+                                       : singleRayBatch(scenes[i].second->scene(), rays);
         const double start = threadSeconds();
         std::size_t traced = 0;
         while (traced < rays.size()) traced += batch();

@@ -13,9 +13,12 @@ namespace {
 
 const char* shellLabel(ShellKind shell) {
   switch (shell) {
-    case ShellKind::cylinder: return "CY";
-    case ShellKind::cone: return "TC";
-    case ShellKind::hybrid: return "HY";
+    case ShellKind::cylinder:
+      return "CY";
+    case ShellKind::cone:
+      return "TC";
+    case ShellKind::hybrid:
+      return "HY";
   }
   return "?";
 }
@@ -119,7 +122,8 @@ const PaperRow* paperRowFor(const PaperExample& example, const PaperTableRow& ro
   if (row.label == "wide") return nullptr;
   for (const PaperRow& paper : example.paper.rows) {
     if (row.label == "KJ" && std::string(paper.shell) == "KJ") return &paper;
-    if (row.label != "KJ" && row.options.monotoneSplit && row.label == paper.shell && row.options.rangeSearch == paper.rangeSearch) {
+    if (row.label != "KJ" && row.options.monotoneSplit && row.label == paper.shell &&
+        row.options.rangeSearch == paper.rangeSearch) {
       return &paper;
     }
   }
@@ -139,7 +143,8 @@ std::vector<PaperExample> runPaperTable(const PaperTableSettings& settings) {
   const io::SceneDescription description = io::readScene(settings.scene);
   // The first Embree device and TBB pool of a process pay a start-up cost that belongs to no row.
   { const scene::EmbreeScene warmUp(description, scene::BuildSettings{}); }
-  std::vector<PaperExample> examples = {{"Example 1", 1, false, paperTable2(), {}}, {"Example 2", 4, true, paperTable4(), {}}};
+  std::vector<PaperExample> examples = {{"Example 1", 1, false, paperTable2(), {}},
+                                        {"Example 2", 4, true, paperTable4(), {}}};
   for (PaperExample& example : examples) runExample(description, settings, example);
   return examples;
 }
@@ -150,8 +155,8 @@ void printPaperTable(std::FILE* out, const PaperTableSettings& settings, const s
                  example.name.c_str(), settings.scene.c_str(), settings.size, settings.size, example.depth,
                  example.shadows ? "shadows" : "no shadows", settings.threads, settings.threads == 1 ? "" : "s",
                  settings.repetitions);
-    std::fprintf(out, "%-16s %-82s | Baciu, Jia & Lam 2001, Table %d (Pentium III 450 MHz)\n", "", "revolve, this machine",
-                 example.paper.number);
+    std::fprintf(out, "%-16s %-82s | Baciu, Jia & Lam 2001, Table %d (Pentium III 450 MHz)\n", "",
+                 "revolve, this machine", example.paper.number);
     std::fprintf(out, "%-5s %-3s %-3s %9s %9s %9s %9s %9s %9s %9s | %8s %9s %7s %8s %8s\n", "row", "MI", "RS", "time s",
                  "improved", "nodes", "shells M", "quads M", "render s", "Mrays/s", "time s", "improved", "nodes",
                  "shells M", "quads M");
@@ -167,27 +172,34 @@ void printPaperTable(std::FILE* out, const PaperTableSettings& settings, const s
                    1e-6 * double(row.counters.quadratics), row.renderSeconds,
                    1e-6 * double(row.rays()) / row.renderSeconds);
       if (const PaperRow* paper = paperRowFor(example, row)) {
-        std::fprintf(out, " %7.2f%s %9s %7s %8s %8s", paper->seconds, paper->derived ? "*" : " ",
-                     optionalText(paper->improvedPercent, "%.2f%%").c_str(), optionalText(paper->nodesPercent, "%.2f%%").c_str(),
-                     optionalText(paper->shellMillions, "%.2f").c_str(), optionalText(paper->quadraticMillions, "%.2f").c_str());
+        std::fprintf(
+            out, " %7.2f%s %9s %7s %8s %8s", paper->seconds, paper->derived ? "*" : " ",
+            optionalText(paper->improvedPercent, "%.2f%%").c_str(), optionalText(paper->nodesPercent, "%.2f%%").c_str(),
+            optionalText(paper->shellMillions, "%.2f").c_str(), optionalText(paper->quadraticMillions, "%.2f").c_str());
       }
       std::fprintf(out, "%s\n", row.sameImage ? "" : "  (image differs from KJ's)");
     }
     for (const PaperRow& paper : example.paper.rows) {
       if (std::string(paper.shell) != "?") continue;
-      std::fprintf(out, "  Table %d also has a row with range search, its shell illegible in our copy: %.2f s, %s improved, %s "
-                        "nodes, %s M shells, %s M quadratics\n",
-                   example.paper.number, paper.seconds, optionalText(paper.improvedPercent, "%.2f%%").c_str(),
-                   optionalText(paper.nodesPercent, "%.2f%%").c_str(), optionalText(paper.shellMillions, "%.2f").c_str(),
-                   optionalText(paper.quadraticMillions, "%.2f").c_str());
+      std::fprintf(
+          out,
+          "  Table %d also has a row with range search, its shell illegible in our copy: %.2f s, %s improved, %s "
+          "nodes, %s M shells, %s M quadratics\n",
+          example.paper.number, paper.seconds, optionalText(paper.improvedPercent, "%.2f%%").c_str(),
+          optionalText(paper.nodesPercent, "%.2f%%").c_str(), optionalText(paper.shellMillions, "%.2f").c_str(),
+          optionalText(paper.quadraticMillions, "%.2f").c_str());
     }
     for (const PaperRow& paper : example.paper.rows) {
-      if (paper.derived) std::fprintf(out, "  * Table %d's KJ time follows from its rows' times and percentages\n", example.paper.number);
+      if (paper.derived)
+        std::fprintf(out, "  * Table %d's KJ time follows from its rows' times and percentages\n",
+                     example.paper.number);
     }
   }
-  std::fprintf(out, "\ntime = build + render; improved = KJ's time / the row's - 1; nodes = nodes visited / (rays x tree nodes "
-                    "of all objects); shells = bounding-shell (KJ: strip) tests; quads = ray/cone quadratics; rays = camera "
-                    "+ reflected/refracted + shadow\n");
+  std::fprintf(
+      out,
+      "\ntime = build + render; improved = KJ's time / the row's - 1; nodes = nodes visited / (rays x tree nodes "
+      "of all objects); shells = bounding-shell (KJ: strip) tests; quads = ray/cone quadratics; rays = camera "
+      "+ reflected/refracted + shadow\n");
 }
 
 nlohmann::ordered_json paperTableJson(const PaperTableSettings& settings, const std::vector<PaperExample>& examples) {
@@ -219,26 +231,36 @@ nlohmann::ordered_json paperTableJson(const PaperTableSettings& settings, const 
       entry["shell_tests_millions"] = 1e-6 * double(row.counters.shellTests);
       entry["quadratics_millions"] = 1e-6 * double(row.counters.quadratics);
       entry["mrays_per_second"] = 1e-6 * double(row.rays()) / row.renderSeconds;
-      entry["rays"] = {{"camera", row.cameraRays}, {"bounce", row.bounceRays}, {"shadow", row.shadowRays}, {"total", row.rays()}};
-      entry["counters"] = {{"queries", row.counters.rays}, {"nodes_visited", row.counters.nodesVisited},
-                           {"shell_tests", row.counters.shellTests}, {"quadratics", row.counters.quadratics},
+      entry["rays"] = {
+          {"camera", row.cameraRays}, {"bounce", row.bounceRays}, {"shadow", row.shadowRays}, {"total", row.rays()}};
+      entry["counters"] = {{"queries", row.counters.rays},
+                           {"nodes_visited", row.counters.nodesVisited},
+                           {"shell_tests", row.counters.shellTests},
+                           {"quadratics", row.counters.quadratics},
                            {"tree_nodes", row.treeNodes}};
       entry["same_image_as_kj"] = row.sameImage;
       rows.push_back(entry);
     }
     nlohmann::ordered_json paper = nlohmann::ordered_json::array();
     for (const PaperRow& row : example.paper.rows) {
-      const auto optional = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(); };
-      paper.push_back({{"shell", row.shell}, {"range_search", row.rangeSearch}, {"seconds", row.seconds},
-                       {"improved_percent", optional(row.improvedPercent)}, {"nodes_percent", optional(row.nodesPercent)},
-                       {"shell_millions", optional(row.shellMillions)}, {"quadratic_millions", optional(row.quadraticMillions)},
+      const auto optional = [](const std::optional<double>& v) {
+        return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json();
+      };
+      paper.push_back({{"shell", row.shell},
+                       {"range_search", row.rangeSearch},
+                       {"seconds", row.seconds},
+                       {"improved_percent", optional(row.improvedPercent)},
+                       {"nodes_percent", optional(row.nodesPercent)},
+                       {"shell_millions", optional(row.shellMillions)},
+                       {"quadratic_millions", optional(row.quadraticMillions)},
                        {"derived", row.derived}});
     }
-    list.push_back({{"example", example.name},
-                    {"depth", example.depth},
-                    {"shadows", example.shadows},
-                    {"rows", rows},
-                    {"paper", {{"table", example.paper.number}, {"machine", "Pentium III 450 MHz, 256 MB"}, {"rows", paper}}}});
+    list.push_back(
+        {{"example", example.name},
+         {"depth", example.depth},
+         {"shadows", example.shadows},
+         {"rows", rows},
+         {"paper", {{"table", example.paper.number}, {"machine", "Pentium III 450 MHz, 256 MB"}, {"rows", paper}}}});
   }
   json["examples"] = list;
   return json;

@@ -35,9 +35,9 @@ struct PaperTableRow {
   double buildSeconds = 0;
   double renderSeconds = 0, renderLow = 0, renderHigh = 0;  // median and range of the repetitions
   std::uint64_t cameraRays = 0, bounceRays = 0, shadowRays = 0;
-  Stats counters;                // summed over the counting render
-  std::size_t treeNodes = 0;     // summed over the scene's objects
-  bool sameImage = true;         // bit for bit the first row's image
+  Stats counters;             // summed over the counting render
+  std::size_t treeNodes = 0;  // summed over the scene's objects
+  bool sameImage = true;      // bit for bit the first row's image
   double totalSeconds() const { return buildSeconds + renderSeconds; }
   std::uint64_t rays() const { return cameraRays + bounceRays + shadowRays; }
 };

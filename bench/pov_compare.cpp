@@ -31,11 +31,12 @@ int allThreads(int requested) { return requested > 0 ? requested : tbb::info::de
 
 // The scene as SDL in `directory`; refuses a scene that POV-Ray would render differently, since
 // the comparison would then measure the approximation.
-std::string exportForComparison(const io::SceneDescription& description, const std::string& directory, const std::string& name,
-                                int depth, bool shadows) {
+std::string exportForComparison(const io::SceneDescription& description, const std::string& directory,
+                                const std::string& name, int depth, bool shadows) {
   const io::PovScene pov = io::povScene(description, {depth, shadows});
   if (!pov.warnings.empty()) {
-    throw std::runtime_error(description.file + ": POV-Ray cannot render this scene as revolve does (" + pov.warnings.front() +
+    throw std::runtime_error(description.file + ": POV-Ray cannot render this scene as revolve does (" +
+                             pov.warnings.front() +
                              "); compare a scene of point lights, a uniform environment and diffuse, mirror and glass "
                              "materials, such as scenes/patio_points.json");
   }
@@ -52,8 +53,9 @@ struct Renders {
 
 // Both renderers on `threads` threads, `repetitions` times each, interleaved so that a noisy
 // moment of a shared machine falls on both.
-TimedRun timeBoth(const io::SceneDescription& description, const scene::EmbreeScene& built, render::RenderSettings render,
-                  const std::string& povray, PovrayRequest request, int threads, int repetitions, Renders& last) {
+TimedRun timeBoth(const io::SceneDescription& description, const scene::EmbreeScene& built,
+                  render::RenderSettings render, const std::string& povray, PovrayRequest request, int threads,
+                  int repetitions, Renders& last) {
   render.threads = threads;
   request.threads = threads;
   std::vector<double> revolve, trace, parse, bounding;
@@ -99,8 +101,11 @@ render::RenderSettings whitted(int width, int height, int depth, bool shadows) {
 
 nlohmann::ordered_json timedJson(const TimedRun& run) {
   return {{"threads", run.threads},
-          {"revolve_render_seconds", {{"median", run.revolveSeconds}, {"low", run.revolveLow}, {"high", run.revolveHigh},
-                                      {"renders", run.revolveRenders}}},
+          {"revolve_render_seconds",
+           {{"median", run.revolveSeconds},
+            {"low", run.revolveLow},
+            {"high", run.revolveHigh},
+            {"renders", run.revolveRenders}}},
           {"povray_trace_seconds", {{"median", run.povraySeconds}, {"low", run.povrayLow}, {"high", run.povrayHigh}}},
           {"povray_parse_seconds", run.povrayParseSeconds},
           {"povray_bounding_seconds", run.povrayBoundingSeconds},
@@ -158,10 +163,12 @@ PovComparison runPovComparison(const std::string& povray, const PovCompareSettin
   PovComparison result;
   result.width = settings.width > 0 ? settings.width : description.camera.width.value_or(640);
   result.height = settings.height > 0 ? settings.height : description.camera.height.value_or(480);
-  result.figure = !settings.figure.empty() ? settings.figure
-                                           : (std::filesystem::path(settings.outDirectory) / (name + "_side_by_side.png")).string();
+  result.figure = !settings.figure.empty()
+                      ? settings.figure
+                      : (std::filesystem::path(settings.outDirectory) / (name + "_side_by_side.png")).string();
   render::imageFormatFor(result.figure);
-  const std::string file = exportForComparison(description, settings.outDirectory, name, settings.depth, settings.shadows);
+  const std::string file =
+      exportForComparison(description, settings.outDirectory, name, settings.depth, settings.shadows);
   result.povFile = (std::filesystem::path(settings.outDirectory) / file).string();
   // The figure's folder must take it: checked now (by naming it as an output), before minutes of work.
   io::OutputSet{}.add("--figure", result.figure);
@@ -169,11 +176,13 @@ PovComparison runPovComparison(const std::string& povray, const PovCompareSettin
   const scene::EmbreeScene built(description, scene::BuildSettings{});
   result.revolveBuildSeconds = built.buildSeconds();
   const render::RenderSettings render = whitted(result.width, result.height, settings.depth, settings.shadows);
-  PovrayRequest request{settings.outDirectory, file, name + "_povray.exr", result.width, result.height, 1, settings.depth, settings.shadows};
+  PovrayRequest request{settings.outDirectory, file, name + "_povray.exr", result.width,
+                        result.height,         1,    settings.depth,       settings.shadows};
   Renders last;
   const int all = allThreads(settings.threads);
   result.runs.push_back(timeBoth(description, built, render, povray, request, 1, settings.repetitions, last));
-  if (all > 1) result.runs.push_back(timeBoth(description, built, render, povray, request, all, settings.repetitions, last));
+  if (all > 1)
+    result.runs.push_back(timeBoth(description, built, render, povray, request, all, settings.repetitions, last));
 
   result.revolveRays = last.revolve.rays.camera + last.revolve.rays.bounce + last.revolve.rays.shadow;
   result.revolveShadowRays = last.revolve.rays.shadow;
@@ -187,49 +196,62 @@ PovComparison runPovComparison(const std::string& povray, const PovCompareSettin
   outputs.add("revolve's image", result.revolveImage);
   render::writeImage(outputs.stream(result.revolveImage), result.revolveImage, last.revolve.image);
   outputs.commit();
-  writeSideBySide(result.figure, last.revolve.image, last.povray.image, result.difference.exposure, "revolve", "POV-Ray 3.7");
+  writeSideBySide(result.figure, last.revolve.image, last.povray.image, result.difference.exposure, "revolve",
+                  "POV-Ray 3.7");
   return result;
 }
 
 void printPovComparison(std::FILE* out, const PovCompareSettings& settings, const PovComparison& c) {
-  std::fprintf(out, "\n== %s: revolve (whitted) and POV-Ray 3.7, %d x %d, 1 sample a pixel, depth %d, %s; median of %d\n",
+  std::fprintf(out,
+               "\n== %s: revolve (whitted) and POV-Ray 3.7, %d x %d, 1 sample a pixel, depth %d, %s; median of %d\n",
                settings.scene.c_str(), c.width, c.height, settings.depth, settings.shadows ? "shadows" : "no shadows",
                settings.repetitions);
   std::fprintf(out, "%8s %16s %22s %10s %18s\n", "threads", "revolve render s", "POV-Ray Trace Time s", "ratio",
                "POV-Ray parse+bound s");
   for (const TimedRun& run : c.runs) {
-    std::fprintf(out, "%8d %16.4f %22.3f %9.1fx %18.3f\n", run.threads, run.revolveSeconds, run.povraySeconds, run.ratio(),
-                 run.povrayParseSeconds + run.povrayBoundingSeconds);
+    std::fprintf(out, "%8d %16.4f %22.3f %9.1fx %18.3f\n", run.threads, run.revolveSeconds, run.povraySeconds,
+                 run.ratio(), run.povrayParseSeconds + run.povrayBoundingSeconds);
   }
-  std::fprintf(out, "rays: revolve %llu (%llu shadow), POV-Ray %llu (+%llu shadow ray tests); lathe tests %llu; revolve build %.4f s\n",
-               (unsigned long long)c.revolveRays, (unsigned long long)c.revolveShadowRays, (unsigned long long)c.povrayRays,
-               (unsigned long long)c.povrayShadowRayTests, (unsigned long long)c.povrayLatheTests, c.revolveBuildSeconds);
-  std::fprintf(out, "image difference (linear, clamped to [0, 1]): exposure %.4f, mean |d| %.4f of mean %.4f (%.1f%%), "
-                    "%.2f%% of pixels differ by > 0.05\n",
+  std::fprintf(out,
+               "rays: revolve %llu (%llu shadow), POV-Ray %llu (+%llu shadow ray tests); lathe tests %llu; revolve "
+               "build %.4f s\n",
+               (unsigned long long)c.revolveRays, (unsigned long long)c.revolveShadowRays,
+               (unsigned long long)c.povrayRays, (unsigned long long)c.povrayShadowRayTests,
+               (unsigned long long)c.povrayLatheTests, c.revolveBuildSeconds);
+  std::fprintf(out,
+               "image difference (linear, clamped to [0, 1]): exposure %.4f, mean |d| %.4f of mean %.4f (%.1f%%), "
+               "%.2f%% of pixels differ by > 0.05\n",
                c.difference.exposure, c.difference.meanAbsolute, c.difference.meanReference,
-               100.0 * c.difference.meanAbsolute / std::max(c.difference.meanReference, 1e-30), 100.0 * c.difference.differingPixels);
-  std::fprintf(out, "wrote %s (revolve | POV-Ray | difference x 4), %s, %s, %s\n", c.figure.c_str(), c.revolveImage.c_str(),
-               c.povrayImage.c_str(), c.povFile.c_str());
+               100.0 * c.difference.meanAbsolute / std::max(c.difference.meanReference, 1e-30),
+               100.0 * c.difference.differingPixels);
+  std::fprintf(out, "wrote %s (revolve | POV-Ray | difference x 4), %s, %s, %s\n", c.figure.c_str(),
+               c.revolveImage.c_str(), c.povrayImage.c_str(), c.povFile.c_str());
 }
 
 nlohmann::ordered_json povComparisonJson(const PovCompareSettings& settings, const PovComparison& c) {
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
   for (const TimedRun& run : c.runs) runs.push_back(timedJson(run));
-  return {{"settings",
-           {{"scene", settings.scene},
-            {"width", c.width},
-            {"height", c.height},
-            {"spp", 1},
-            {"integrator", "whitted"},
-            {"depth", settings.depth},
-            {"shadows", settings.shadows},
-            {"repetitions", settings.repetitions}}},
-          {"runs", runs},
-          {"revolve_build_seconds", c.revolveBuildSeconds},
-          {"rays", {{"revolve", c.revolveRays}, {"revolve_shadow", c.revolveShadowRays}, {"povray", c.povrayRays},
-                    {"povray_shadow_ray_tests", c.povrayShadowRayTests}, {"povray_lathe_tests", c.povrayLatheTests}}},
-          {"image_difference", differenceJson(c.difference)},
-          {"files", {{"figure", c.figure}, {"pov", c.povFile}, {"revolve_image", c.revolveImage}, {"povray_image", c.povrayImage}}}};
+  return {
+      {"settings",
+       {{"scene", settings.scene},
+        {"width", c.width},
+        {"height", c.height},
+        {"spp", 1},
+        {"integrator", "whitted"},
+        {"depth", settings.depth},
+        {"shadows", settings.shadows},
+        {"repetitions", settings.repetitions}}},
+      {"runs", runs},
+      {"revolve_build_seconds", c.revolveBuildSeconds},
+      {"rays",
+       {{"revolve", c.revolveRays},
+        {"revolve_shadow", c.revolveShadowRays},
+        {"povray", c.povrayRays},
+        {"povray_shadow_ray_tests", c.povrayShadowRayTests},
+        {"povray_lathe_tests", c.povrayLatheTests}}},
+      {"image_difference", differenceJson(c.difference)},
+      {"files",
+       {{"figure", c.figure}, {"pov", c.povFile}, {"revolve_image", c.revolveImage}, {"povray_image", c.povrayImage}}}};
 }
 
 std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovScalingSettings& settings) {
@@ -237,7 +259,8 @@ std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovS
   const int threads = allThreads(settings.threads);
   for (const int points : settings.points) {
     if (points < 16 || std::size_t(points) > io::kPovMaxLathePoints) {
-      throw std::invalid_argument("--points " + std::to_string(points) + ": expected 16 to 32767 (POV-Ray's lathe limit)");
+      throw std::invalid_argument("--points " + std::to_string(points) +
+                                  ": expected 16 to 32767 (POV-Ray's lathe limit)");
     }
   }
   // The polylines at each count, then the spline: the vase's lines and arcs as cubic pieces within
@@ -252,7 +275,8 @@ std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovS
     const std::string file = exportForComparison(description, settings.outDirectory, name, 1, true);
     const scene::EmbreeScene built(description, scene::BuildSettings{});
     const render::RenderSettings render = whitted(settings.size, settings.size, 1, true);
-    const PovrayRequest request{settings.outDirectory, file, name + "_povray.exr", settings.size, settings.size, threads, 1, true};
+    const PovrayRequest request{
+        settings.outDirectory, file, name + "_povray.exr", settings.size, settings.size, threads, 1, true};
     Renders last;
     PovScalingPoint point;
     point.points = points;
@@ -267,19 +291,22 @@ std::vector<PovScalingPoint> runPovScaling(const std::string& povray, const PovS
 }
 
 void printPovScaling(std::FILE* out, const PovScalingSettings& settings, const std::vector<PovScalingPoint>& points) {
-  std::fprintf(out, "\n== one lathe (the vase), %d x %d, whitted depth 1 with shadows, %d threads, median of %d\n", settings.size,
-               settings.size, points.empty() ? 0 : points.front().timing.threads, settings.repetitions);
-  std::fprintf(out, "%8s %16s %22s %10s %14s\n", "points", "revolve render s", "POV-Ray Trace Time s", "ratio", "mean |d| image");
+  std::fprintf(out, "\n== one lathe (the vase), %d x %d, whitted depth 1 with shadows, %d threads, median of %d\n",
+               settings.size, settings.size, points.empty() ? 0 : points.front().timing.threads, settings.repetitions);
+  std::fprintf(out, "%8s %16s %22s %10s %14s\n", "points", "revolve render s", "POV-Ray Trace Time s", "ratio",
+               "mean |d| image");
   for (const PovScalingPoint& p : points) {
     if (p.spline) continue;
-    std::fprintf(out, "%8d %16.5f %22.3f %9.1fx %14.5f\n", p.points, p.timing.revolveSeconds, p.timing.povraySeconds, p.timing.ratio(),
-                 p.difference.meanAbsolute);
+    std::fprintf(out, "%8d %16.5f %22.3f %9.1fx %14.5f\n", p.points, p.timing.revolveSeconds, p.timing.povraySeconds,
+                 p.timing.ratio(), p.difference.meanAbsolute);
   }
   for (const PovScalingPoint& p : points) {
     if (!p.spline) continue;
-    std::fprintf(out, "the vase as %d cubic Bezier pieces, traced exactly; POV-Ray's bezier_spline lathe of the same pieces:\n", p.points);
-    std::fprintf(out, "%8s %16.5f %22.3f %9.1fx %14.5f\n", "spline", p.timing.revolveSeconds, p.timing.povraySeconds, p.timing.ratio(),
-                 p.difference.meanAbsolute);
+    std::fprintf(
+        out, "the vase as %d cubic Bezier pieces, traced exactly; POV-Ray's bezier_spline lathe of the same pieces:\n",
+        p.points);
+    std::fprintf(out, "%8s %16.5f %22.3f %9.1fx %14.5f\n", "spline", p.timing.revolveSeconds, p.timing.povraySeconds,
+                 p.timing.ratio(), p.difference.meanAbsolute);
   }
 }
 

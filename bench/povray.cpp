@@ -2,17 +2,17 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
-#include <spawn.h>
 #include <stdexcept>
-#include <sys/wait.h>
 #include <vector>
 
 extern char** environ;
@@ -35,7 +35,8 @@ std::string tail(const std::string& text, int lines) {
     if (!line.empty()) kept.push_back(line);
   }
   std::string out;
-  for (std::size_t i = kept.size() > std::size_t(lines) ? kept.size() - lines : 0; i < kept.size(); ++i) out += " | " + kept[i];
+  for (std::size_t i = kept.size() > std::size_t(lines) ? kept.size() - lines : 0; i < kept.size(); ++i)
+    out += " | " + kept[i];
   return out;
 }
 
@@ -91,27 +92,39 @@ render::Image readImage(const std::string& path) {
   OIIO::ImageBuf buffer(path);
   if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT)) throw std::runtime_error(path + ": " + buffer.geterror());
   const OIIO::ImageSpec& spec = buffer.spec();
-  if (spec.nchannels < 3) throw std::runtime_error(path + ": expected an RGB image, found " + std::to_string(spec.nchannels) + " channels");
+  if (spec.nchannels < 3)
+    throw std::runtime_error(path + ": expected an RGB image, found " + std::to_string(spec.nchannels) + " channels");
   render::Image image;
   image.width = spec.width;
   image.height = spec.height;
   image.pixels.resize(3 * std::size_t(spec.width) * spec.height);
   const OIIO::ROI roi(spec.x, spec.x + spec.width, spec.y, spec.y + spec.height, 0, 1, 0, 3);
-  if (!buffer.get_pixels(roi, OIIO::TypeDesc::FLOAT, image.pixels.data())) throw std::runtime_error(path + ": " + buffer.geterror());
+  if (!buffer.get_pixels(roi, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw std::runtime_error(path + ": " + buffer.geterror());
   return image;
 }
 
 PovrayRun runPovray(const std::string& povray, const PovrayRequest& request) {
-  const std::string stats = "povray_stats.txt", log = (std::filesystem::path(request.directory) / "povray_log.txt").string();
+  const std::string stats = "povray_stats.txt",
+                    log = (std::filesystem::path(request.directory) / "povray_log.txt").string();
   const std::filesystem::path statsPath = std::filesystem::path(request.directory) / stats;
   const std::filesystem::path imagePath = std::filesystem::path(request.directory) / request.image;
   std::filesystem::remove(statsPath);
   std::filesystem::remove(imagePath);
   // -D: no display; -V: quiet; -A: one ray through each pixel centre; +FE: OpenEXR, linear;
   // +GS: statistics (a relative name: POV-Ray writes only below its working directory).
-  const std::vector<std::string> argv = {povray, "-D", "-V", "+I" + request.scene, "+O" + request.image, "+FE",
-                                         "+W" + std::to_string(request.width), "+H" + std::to_string(request.height), "-A",
-                                         "+WT" + std::to_string(request.threads), "+GS" + stats, "File_Gamma=1.0",
+  const std::vector<std::string> argv = {povray,
+                                         "-D",
+                                         "-V",
+                                         "+I" + request.scene,
+                                         "+O" + request.image,
+                                         "+FE",
+                                         "+W" + std::to_string(request.width),
+                                         "+H" + std::to_string(request.height),
+                                         "-A",
+                                         "+WT" + std::to_string(request.threads),
+                                         "+GS" + stats,
+                                         "File_Gamma=1.0",
                                          "Declare=Revolve_Depth=" + std::to_string(request.depth),
                                          "Declare=Revolve_Shadows=" + std::string(request.shadows ? "1" : "0")};
   const auto start = std::chrono::steady_clock::now();
@@ -119,7 +132,8 @@ PovrayRun runPovray(const std::string& povray, const PovrayRequest& request) {
   PovrayRun run;
   run.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (status != 0) {
-    throw std::runtime_error("povray failed on " + request.scene + " (exit status " + std::to_string(status) + ")" + tail(readFile(log), 3));
+    throw std::runtime_error("povray failed on " + request.scene + " (exit status " + std::to_string(status) + ")" +
+                             tail(readFile(log), 3));
   }
   const std::string text = readFile(statsPath.string());
   const std::optional<double> trace = timeStatistic(text, "Trace Time");

@@ -9,7 +9,7 @@
 namespace revolve::bench {
 namespace {
 
-constexpr std::size_t kBatchRays = 1024;        // per batch on one thread: 20 us to 10 ms of work
+constexpr std::size_t kBatchRays = 1024;           // per batch on one thread: 20 us to 10 ms of work
 constexpr std::size_t kThreadedBatchRays = 16384;  // enough work to spread over the threads
 
 }  // namespace
@@ -89,7 +89,8 @@ std::function<std::size_t()> occludedBatch(RTCScene scene, const std::vector<Ray
   };
 }
 
-std::function<std::size_t()> occludedPacketBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets) {
+std::function<std::size_t()> occludedPacketBatch(RTCScene scene,
+                                                 std::shared_ptr<const std::vector<RTCRayHit8>> packets) {
   return [scene, packets, cursor = std::size_t{0}]() mutable {
     embree::RayQuery query;
     alignas(32) const int valid[8] = {-1, -1, -1, -1, -1, -1, -1, -1};

@@ -21,6 +21,7 @@ std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ra
 std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets);
 std::function<std::size_t()> threadedBatch(RTCScene scene, const std::vector<Ray>& rays);
 std::function<std::size_t()> occludedBatch(RTCScene scene, const std::vector<Ray>& rays);
-std::function<std::size_t()> occludedPacketBatch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit8>> packets);
+std::function<std::size_t()> occludedPacketBatch(RTCScene scene,
+                                                 std::shared_ptr<const std::vector<RTCRayHit8>> packets);
 
 }  // namespace revolve::bench

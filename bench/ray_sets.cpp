@@ -48,7 +48,8 @@ std::vector<Ray> incoherentRays(const Box& box, std::size_t count, std::uint64_t
       target[k] = float(box.lower[k] + unit(random) * (box.upper[k] - box.lower[k]));
     }
     ray.origin = {origin[0], origin[1], origin[2]};
-    const double direction[3] = {double(target[0]) - origin[0], double(target[1]) - origin[1], double(target[2]) - origin[2]};
+    const double direction[3] = {double(target[0]) - origin[0], double(target[1]) - origin[1],
+                                 double(target[2]) - origin[2]};
     ray.direction = unitDirection(direction);
     rays.push_back(ray);
   }

@@ -21,8 +21,10 @@ using nlohmann::json;
 
 std::string bytesText(double bytes) {
   char text[32];
-  if (bytes >= 1e6) std::snprintf(text, sizeof text, "%.1f MB", bytes / 1e6);
-  else std::snprintf(text, sizeof text, "%.1f KB", bytes / 1e3);
+  if (bytes >= 1e6)
+    std::snprintf(text, sizeof text, "%.1f MB", bytes / 1e6);
+  else
+    std::snprintf(text, sizeof text, "%.1f KB", bytes / 1e3);
   return text;
 }
 
@@ -84,14 +86,21 @@ json shapeJson(const ShapeResult& shape) {
               {"residual_max", (row.mode.rfind("camera", 0) == 0 ? c.camera : c.incoherent)->residualMax},
               {"total_bytes", c.totalBytes()}};
     };
-    json entry = {{"mode", row.mode}, {"level", row.level}, {"mibit", pick(row.mibit)}, {"mesh", pick(row.mesh)},
-                  {"leanest_mibit", pick(row.leanestMibit)}, {"leanest_mesh", pick(row.leanestMesh)},
-                  {"embree_cone", pick(row.embreeCone)}, {"embree_round_curve", pick(row.embreeRoundCurve)}};
+    json entry = {{"mode", row.mode},
+                  {"level", row.level},
+                  {"mibit", pick(row.mibit)},
+                  {"mesh", pick(row.mesh)},
+                  {"leanest_mibit", pick(row.leanestMibit)},
+                  {"leanest_mesh", pick(row.leanestMesh)},
+                  {"embree_cone", pick(row.embreeCone)},
+                  {"embree_round_curve", pick(row.embreeRoundCurve)}};
     if (row.mibit && row.mesh) {
-      entry["speed_ratio"] = shape.configs[*row.mibit].speed.at(row.mode).median / shape.configs[*row.mesh].speed.at(row.mode).median;
+      entry["speed_ratio"] =
+          shape.configs[*row.mibit].speed.at(row.mode).median / shape.configs[*row.mesh].speed.at(row.mode).median;
     }
     if (row.leanestMibit && row.leanestMesh) {
-      entry["memory_ratio"] = shape.configs[*row.leanestMesh].totalBytes() / shape.configs[*row.leanestMibit].totalBytes();
+      entry["memory_ratio"] =
+          shape.configs[*row.leanestMesh].totalBytes() / shape.configs[*row.leanestMibit].totalBytes();
     }
     matched.push_back(entry);
   }
@@ -116,13 +125,14 @@ json shapeJson(const ShapeResult& shape) {
 }
 
 void printShape(std::FILE* out, const ShapeResult& shape) {
-  std::fprintf(out,
-               "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays; errors, hits, hit/miss "
-               "disagreements and hits on another sheet than the first (\"other\") of the incoherent rays)\n",
-               shape.name.c_str(), shape.size, shape.incoherentRays, shape.cameraRays);
+  std::fprintf(
+      out,
+      "\n== %s (size %.3g; errors relative to it; %zu incoherent rays, %zu camera rays; errors, hits, hit/miss "
+      "disagreements and hits on another sheet than the first (\"other\") of the incoherent rays)\n",
+      shape.name.c_str(), shape.size, shape.incoherentRays, shape.cameraRays);
   std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s | %8s %8s %8s %8s %8s %8s | %10s %10s %8s\n", "method", "err max",
-               "err p99", "normal p99", "hits", "disagree", "other", "inc 1", "cam 1", "cam 8", "inc all", "occ 1", "occ 8",
-               "revolve", "embree", "build ms");
+               "err p99", "normal p99", "hits", "disagree", "other", "inc 1", "cam 1", "cam 8", "inc all", "occ 1",
+               "occ 8", "revolve", "embree", "build ms");
   for (const ConfigResult& c : shape.configs) {
     if (!c.limitation.empty()) {
       std::fprintf(out, "%-25s cannot: %s\n", c.config.label().c_str(), c.limitation.c_str());
@@ -135,15 +145,16 @@ void printShape(std::FILE* out, const ShapeResult& shape) {
       return std::string(text);
     };
     if (c.incoherent) {
-      std::fprintf(out, "%-25s %10.2e %10.2e %8.3f° %9zu %8.4f%% %8zu |", c.config.label().c_str(), c.incoherent->residualMax,
-                   c.incoherent->residualP99, c.incoherent->normalP99Degrees, c.incoherent->hits,
-                   100.0 * c.incoherent->disagreementFraction(), c.incoherent->otherSheet);
+      std::fprintf(out, "%-25s %10.2e %10.2e %8.3f° %9zu %8.4f%% %8zu |", c.config.label().c_str(),
+                   c.incoherent->residualMax, c.incoherent->residualP99, c.incoherent->normalP99Degrees,
+                   c.incoherent->hits, 100.0 * c.incoherent->disagreementFraction(), c.incoherent->otherSheet);
     } else {
       std::fprintf(out, "%-25s %10s %10s %9s %9s %9s %8s |", c.config.label().c_str(), "-", "-", "-", "-", "-", "-");
     }
-    std::fprintf(out, " %8s %8s %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(), speed(kCamera1).c_str(),
-                 speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(), speed(kOccluded1).c_str(), speed(kOccluded8).c_str(),
-                 bytesText(double(c.revolveBytes)).c_str(), bytesText(double(c.embreeBytes)).c_str(), 1e3 * c.buildSeconds);
+    std::fprintf(out, " %8s %8s %8s %8s %8s %8s | %10s %10s %8.1f\n", speed(kIncoherent1).c_str(),
+                 speed(kCamera1).c_str(), speed(kCamera8).c_str(), speed(kIncoherentAll).c_str(),
+                 speed(kOccluded1).c_str(), speed(kOccluded8).c_str(), bytesText(double(c.revolveBytes)).c_str(),
+                 bytesText(double(c.embreeBytes)).c_str(), 1e3 * c.buildSeconds);
   }
 }
 
@@ -157,18 +168,23 @@ std::string noPick(const ShapeResult& shape, MethodKind kind) {
 
 void printMatched(std::FILE* out, const std::vector<ShapeResult>& shapes) {
   for (const char* mode : kModes) {
-    std::fprintf(out,
-                 "\nMatched error: fastest MIBIT against fastest mesh, and Embree's fastest cone and round curves, with "
-                 "max error <= level (%s; Mrays/s)\n",
-                 modeTitle(mode));
-    std::fprintf(out, "%-8s %7s | %-14s %8s | %-16s %8s | %7s | %10s | %-16s %8s | %-23s %8s\n", "shape", "level", "MIBIT",
-                 "Mrays/s", "mesh", "Mrays/s", "ratio", "mem ratio", "embree cone", "Mrays/s", "embree round curve",
-                 "Mrays/s");
+    std::fprintf(
+        out,
+        "\nMatched error: fastest MIBIT against fastest mesh, and Embree's fastest cone and round curves, with "
+        "max error <= level (%s; Mrays/s)\n",
+        modeTitle(mode));
+    std::fprintf(out, "%-8s %7s | %-14s %8s | %-16s %8s | %7s | %10s | %-16s %8s | %-23s %8s\n", "shape", "level",
+                 "MIBIT", "Mrays/s", "mesh", "Mrays/s", "ratio", "mem ratio", "embree cone", "Mrays/s",
+                 "embree round curve", "Mrays/s");
     for (const ShapeResult& shape : shapes) {
       for (const MatchedRow& row : shape.matched) {
         if (row.mode != mode) continue;
-        const auto label = [&](const std::optional<std::size_t>& i) { return i ? shape.configs[*i].config.label() : std::string("none"); };
-        const auto speed = [&](const std::optional<std::size_t>& i) { return i ? shape.configs[*i].speed.at(mode).median : NAN; };
+        const auto label = [&](const std::optional<std::size_t>& i) {
+          return i ? shape.configs[*i].config.label() : std::string("none");
+        };
+        const auto speed = [&](const std::optional<std::size_t>& i) {
+          return i ? shape.configs[*i].speed.at(mode).median : NAN;
+        };
         char ratio[16] = "-", memory[16] = "-";
         if (row.mibit && row.mesh) std::snprintf(ratio, sizeof ratio, "%.2fx", speed(row.mibit) / speed(row.mesh));
         if (row.leanestMibit && row.leanestMesh) {
@@ -199,7 +215,9 @@ void printCurves(std::FILE* out, const std::vector<ShapeResult>& shapes) {
     const ConfigResult* mibit = nullptr;
     for (const ConfigResult& c : shape.configs) {
       if (c.config.kind == MethodKind::spline) spline = &c;
-      if (c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary && c.config.points == 256) mibit = &c;
+      if (c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary &&
+          c.config.points == 256)
+        mibit = &c;
     }
     if (spline == nullptr || mibit == nullptr) continue;
     const auto speed = [](const ConfigResult* c, const char* mode) {
@@ -208,24 +226,27 @@ void printCurves(std::FILE* out, const std::vector<ShapeResult>& shapes) {
     };
     std::fprintf(out, "%-8s %6zu %9.1e | %9.2e %8.3g %8.3g | %9.2e %8.3g %8.3g | %6.0f%% %6.0f%%\n", shape.name.c_str(),
                  shape.splinePieces, shape.splineError, spline->incoherent ? spline->incoherent->residualMax : NAN,
-                 speed(spline, kIncoherent1), speed(spline, kCamera8), mibit->incoherent ? mibit->incoherent->residualMax : NAN,
-                 speed(mibit, kIncoherent1), speed(mibit, kCamera8), 100 * speed(spline, kIncoherent1) / speed(mibit, kIncoherent1),
+                 speed(spline, kIncoherent1), speed(spline, kCamera8),
+                 mibit->incoherent ? mibit->incoherent->residualMax : NAN, speed(mibit, kIncoherent1),
+                 speed(mibit, kCamera8), 100 * speed(spline, kIncoherent1) / speed(mibit, kIncoherent1),
                  100 * speed(spline, kCamera8) / speed(mibit, kCamera8));
   }
-  std::fprintf(out, "\nPolyline points for one max error (closed forms): one sagitta for every arc (MIBIT's ladder), "
-                    "Profile::fromCurve of the spline, even spacing along the curve\n");
-  std::fprintf(out, "%-8s %10s | %8s %9s %8s | %9s\n", "shape", "max error", "sagitta", "adaptive", "even", "adaptive/even");
+  std::fprintf(out,
+               "\nPolyline points for one max error (closed forms): one sagitta for every arc (MIBIT's ladder), "
+               "Profile::fromCurve of the spline, even spacing along the curve\n");
+  std::fprintf(out, "%-8s %10s | %8s %9s %8s | %9s\n", "shape", "max error", "sagitta", "adaptive", "even",
+               "adaptive/even");
   for (const ShapeResult& shape : shapes) {
     for (const PointsRow& row : shape.points) {
-      std::fprintf(out, "%-8s %10.2e | %8d %9d %8d | %9.2f\n", shape.name.c_str(), row.error, row.samplePoints, row.adaptivePoints,
-                   row.uniformPoints, double(row.adaptivePoints) / row.uniformPoints);
+      std::fprintf(out, "%-8s %10.2e | %8d %9d %8d | %9.2f\n", shape.name.c_str(), row.error, row.samplePoints,
+                   row.adaptivePoints, row.uniformPoints, double(row.adaptivePoints) / row.uniformPoints);
     }
   }
 }
 
 void printScaling(std::FILE* out, const ShapeResult& shape) {
-  std::fprintf(out, "\n== scaling: %s, %zu incoherent rays, rtcIntersect1, 1 thread (Mrays/s; max error)\n", shape.name.c_str(),
-               shape.incoherentRays);
+  std::fprintf(out, "\n== scaling: %s, %zu incoherent rays, rtcIntersect1, 1 thread (Mrays/s; max error)\n",
+               shape.name.c_str(), shape.incoherentRays);
   std::fprintf(out, "%-26s %10s %10s %12s\n", "method", "Mrays/s", "err max", "memory");
   for (const ConfigResult& c : shape.configs) {
     if (!c.limitation.empty()) {
@@ -260,26 +281,26 @@ void printTables(std::FILE* out, const RunResults& results) {
   for (const ShapeResult& shape : results.scaling) printScaling(out, shape);
 }
 
-void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results, const std::string& commandLine) {
+void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results,
+               const std::string& commandLine) {
   json speedError = json::array(), scaling = json::array();
   for (const ShapeResult& shape : results.speedError) speedError.push_back(shapeJson(shape));
   for (const ShapeResult& shape : results.scaling) scaling.push_back(shapeJson(shape));
   const RunSettings& s = results.settings;
-  const json document = {
-      {"command", commandLine},
-      {"date", today()},
-      {"machine", {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}}},
-      {"embree", RTC_VERSION_STRING},
-      {"settings",
-       {{"quick", s.quick},
-        {"incoherent_rays", s.incoherentRays},
-        {"camera_width", s.cameraWidth},
-        {"camera_height", s.cameraHeight},
-        {"repetitions", s.repetitions},
-        {"min_seconds", s.minSeconds},
-        {"seed", s.seed}}},
-      {"speed_error", speedError},
-      {"scaling", scaling}};
+  const json document = {{"command", commandLine},
+                         {"date", today()},
+                         {"machine", {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}}},
+                         {"embree", RTC_VERSION_STRING},
+                         {"settings",
+                          {{"quick", s.quick},
+                           {"incoherent_rays", s.incoherentRays},
+                           {"camera_width", s.cameraWidth},
+                           {"camera_height", s.cameraHeight},
+                           {"repetitions", s.repetitions},
+                           {"min_seconds", s.minSeconds},
+                           {"seed", s.seed}}},
+                         {"speed_error", speedError},
+                         {"scaling", scaling}};
   const std::string text = document.dump(1) + "\n";
   outputs.stream(path).write(text);
 }
@@ -287,7 +308,8 @@ void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults
 void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults& results) {
   std::ostringstream csv;
   csv << "suite,shape,method,points,slices,mode,mrays_median,mrays_low,mrays_high,residual_max,residual_p99,"
-         "residual_rms,normal_p99_degrees,disagreement_fraction,other_sheet_fraction,revolve_bytes,embree_bytes,build_seconds,"
+         "residual_rms,normal_p99_degrees,disagreement_fraction,other_sheet_fraction,revolve_bytes,embree_bytes,build_"
+         "seconds,"
          "limitation\n";
   const auto rows = [&](const char* suite, const std::vector<ShapeResult>& shapes) {
     for (const ShapeResult& shape : shapes) {
@@ -299,11 +321,12 @@ void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults&
         }
         for (const auto& [mode, t] : c.speed) {
           const std::optional<ErrorSummary>& e = mode.rfind("camera", 0) == 0 ? c.camera : c.incoherent;
-          csv << suite << ',' << shape.name << ',' << c.config.method() << ',' << c.config.points << ',' << c.config.slices
-              << ',' << mode << ',' << csvNumber(t.median) << ',' << csvNumber(t.low) << ',' << csvNumber(t.high) << ',';
+          csv << suite << ',' << shape.name << ',' << c.config.method() << ',' << c.config.points << ','
+              << c.config.slices << ',' << mode << ',' << csvNumber(t.median) << ',' << csvNumber(t.low) << ','
+              << csvNumber(t.high) << ',';
           if (e) {
-            csv << csvNumber(e->residualMax) << ',' << csvNumber(e->residualP99) << ',' << csvNumber(e->residualRms) << ','
-                << csvNumber(e->normalP99Degrees) << ',' << csvNumber(e->disagreementFraction()) << ','
+            csv << csvNumber(e->residualMax) << ',' << csvNumber(e->residualP99) << ',' << csvNumber(e->residualRms)
+                << ',' << csvNumber(e->normalP99Degrees) << ',' << csvNumber(e->disagreementFraction()) << ','
                 << csvNumber(e->otherSheetFraction());
           } else {
             csv << ",,,,,";

@@ -14,7 +14,8 @@ void printTables(std::FILE* out, const RunResults& results);
 
 // Written into the outputs' temporaries (io/output_set.h), committed together by the caller: an
 // output is whole or absent.
-void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results, const std::string& commandLine);
+void writeJson(io::OutputSet& outputs, const std::string& path, const RunResults& results,
+               const std::string& commandLine);
 void writeCsv(io::OutputSet& outputs, const std::string& path, const RunResults& results);
 
 }  // namespace revolve::bench

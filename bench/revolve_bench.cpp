@@ -1,6 +1,7 @@
 // revolve-bench: speed against error, side by side, on the same rays.
 //
-//   revolve-bench [speed-error | scaling | paper-table | pov | pov-scaling] [--quick] [--json FILE] [--csv FILE] [options]
+//   revolve-bench [speed-error | scaling | paper-table | pov | pov-scaling] [--quick] [--json FILE] [--csv FILE]
+//   [options]
 //
 // speed-error traces five smooth test shapes with MIBIT (each shell kind) at increasing profile
 // resolution, with Embree triangle meshes over a grid of profile points x slices, with the linear
@@ -39,13 +40,17 @@ int main(int argc, char** argv) {
   std::vector<std::string> shapes;
   cli.add_flag("--quick", settings.quick, "small ladders, few rays, one repetition: a smoke test (under a minute)");
   cli.add_option("--json", jsonPath, "write every figure as JSON")->check(app::kNonEmpty);
-  cli.add_option("--csv", csvPath, "write every figure as CSV, one row per method, resolution and timing mode")->check(app::kNonEmpty);
-  cli.add_option("--rays", settings.incoherentRays, "incoherent rays per shape")->check(app::wholeNumberIn<std::size_t>(8, 100000000));
+  cli.add_option("--csv", csvPath, "write every figure as CSV, one row per method, resolution and timing mode")
+      ->check(app::kNonEmpty);
+  cli.add_option("--rays", settings.incoherentRays, "incoherent rays per shape")
+      ->check(app::wholeNumberIn<std::size_t>(8, 100000000));
   cli.add_option("--camera", camera, "camera rays, WIDTHxHEIGHT (width a multiple of 4, height of 2)");
   cli.add_option("--repetitions", settings.repetitions, "timed repetitions of each measurement (median reported)")
       ->check(app::wholeNumberIn(1, 1000));
-  cli.add_option("--min-time", settings.minSeconds, "seconds each repetition runs at least")->check(CLI::Range(0.0001, 100.0));
-  cli.add_option("--seed", settings.seed, "seed of the incoherent rays")->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX));
+  cli.add_option("--min-time", settings.minSeconds, "seconds each repetition runs at least")
+      ->check(CLI::Range(0.0001, 100.0));
+  cli.add_option("--seed", settings.seed, "seed of the incoherent rays")
+      ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX));
   CLI::App* speedError = cli.add_subcommand("speed-error", "every method on the test shapes: speed, error, memory");
   speedError->add_option("--shapes", shapes, "only these shapes (sphere, torus, vase, goblet, bottle)")
       ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
@@ -53,34 +58,55 @@ int main(int argc, char** argv) {
 
   PaperTableSettings paper;
   CLI::App* paperTable = cli.add_subcommand(
-      "paper-table", "Baciu, Jia & Lam 2001's Tables 2 and 4 on the patio: KJ and MIBIT's shells, monotone split and range search");
+      "paper-table",
+      "Baciu, Jia & Lam 2001's Tables 2 and 4 on the patio: KJ and MIBIT's shells, monotone split and range search");
   paperTable->add_option("--scene", paper.scene, "the scene")->check(app::kNonEmpty)->capture_default_str();
-  paperTable->add_option("--size", paper.size, "image width and height")->check(app::wholeNumberIn(1, 16384))->capture_default_str();
-  paperTable->add_option("--threads", paper.threads, "render threads")->check(app::wholeNumberIn(1, 1024))->capture_default_str();
+  paperTable->add_option("--size", paper.size, "image width and height")
+      ->check(app::wholeNumberIn(1, 16384))
+      ->capture_default_str();
+  paperTable->add_option("--threads", paper.threads, "render threads")
+      ->check(app::wholeNumberIn(1, 1024))
+      ->capture_default_str();
 
   PovCompareSettings pov;
-  CLI::App* povCompare = cli.add_subcommand("pov", "a scene rendered by revolve (whitted) and POV-Ray 3.7: trace times, image difference");
+  CLI::App* povCompare =
+      cli.add_subcommand("pov", "a scene rendered by revolve (whitted) and POV-Ray 3.7: trace times, image difference");
   povCompare->add_option("--scene", pov.scene, "the scene (point lights, uniform environment, no metal)")
       ->check(app::kNonEmpty)
       ->capture_default_str();
-  povCompare->add_option("--width", pov.width, "image width (default: the scene's camera.width, else 640)")->check(app::wholeNumberIn(1, 16384));
-  povCompare->add_option("--height", pov.height, "image height (default: camera.height, else 480)")->check(app::wholeNumberIn(1, 16384));
-  povCompare->add_option("--depth", pov.depth, "ray levels (POV-Ray's max_trace_level)")->check(app::wholeNumberIn(1, 64))->capture_default_str();
+  povCompare->add_option("--width", pov.width, "image width (default: the scene's camera.width, else 640)")
+      ->check(app::wholeNumberIn(1, 16384));
+  povCompare->add_option("--height", pov.height, "image height (default: camera.height, else 480)")
+      ->check(app::wholeNumberIn(1, 16384));
+  povCompare->add_option("--depth", pov.depth, "ray levels (POV-Ray's max_trace_level)")
+      ->check(app::wholeNumberIn(1, 64))
+      ->capture_default_str();
   bool povNoShadows = false;
   povCompare->add_flag("--no-shadows", povNoShadows, "no shadow rays");
-  povCompare->add_option("--threads", pov.threads, "the all-threads count (default: the machine's); one thread is always run too")
+  povCompare
+      ->add_option("--threads", pov.threads,
+                   "the all-threads count (default: the machine's); one thread is always run too")
       ->check(app::wholeNumberIn(1, 1024));
-  povCompare->add_option("--out", pov.outDirectory, "folder for the SDL and both images")->check(app::kNonEmpty)->capture_default_str();
-  povCompare->add_option("--figure", pov.figure, "the side-by-side PNG (default: OUT/<scene>_side_by_side.png)")->check(app::kNonEmpty);
+  povCompare->add_option("--out", pov.outDirectory, "folder for the SDL and both images")
+      ->check(app::kNonEmpty)
+      ->capture_default_str();
+  povCompare->add_option("--figure", pov.figure, "the side-by-side PNG (default: OUT/<scene>_side_by_side.png)")
+      ->check(app::kNonEmpty);
 
   PovScalingSettings povScaling;
-  CLI::App* povScale = cli.add_subcommand("pov-scaling", "one lathe at 16 to 32,767 points: revolve's and POV-Ray's trace times");
+  CLI::App* povScale =
+      cli.add_subcommand("pov-scaling", "one lathe at 16 to 32,767 points: revolve's and POV-Ray's trace times");
   povScale->add_option("--points", povScaling.points, "profile point counts (16 to 32767)")
       ->delimiter(',')
       ->check(app::wholeNumberIn(16, 32767));
-  povScale->add_option("--size", povScaling.size, "image width and height")->check(app::wholeNumberIn(1, 16384))->capture_default_str();
-  povScale->add_option("--threads", povScaling.threads, "threads of both (default: the machine's)")->check(app::wholeNumberIn(1, 1024));
-  povScale->add_option("--out", povScaling.outDirectory, "folder for the SDL and images")->check(app::kNonEmpty)->capture_default_str();
+  povScale->add_option("--size", povScaling.size, "image width and height")
+      ->check(app::wholeNumberIn(1, 16384))
+      ->capture_default_str();
+  povScale->add_option("--threads", povScaling.threads, "threads of both (default: the machine's)")
+      ->check(app::wholeNumberIn(1, 1024));
+  povScale->add_option("--out", povScaling.outDirectory, "folder for the SDL and images")
+      ->check(app::kNonEmpty)
+      ->capture_default_str();
   cli.require_subcommand(0, 1);
   if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-bench")) return *status;
 
@@ -99,9 +125,11 @@ int main(int argc, char** argv) {
     if (!camera.empty()) {
       char x = 0;
       std::istringstream text(camera);
-      if (!(text >> settings.cameraWidth >> x >> settings.cameraHeight) || x != 'x' || !text.eof() || settings.cameraWidth <= 0 ||
-          settings.cameraWidth % 4 != 0 || settings.cameraHeight <= 0 || settings.cameraHeight % 2 != 0) {
-        throw std::runtime_error("--camera " + camera + ": expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2");
+      if (!(text >> settings.cameraWidth >> x >> settings.cameraHeight) || x != 'x' || !text.eof() ||
+          settings.cameraWidth <= 0 || settings.cameraWidth % 4 != 0 || settings.cameraHeight <= 0 ||
+          settings.cameraHeight % 2 != 0) {
+        throw std::runtime_error("--camera " + camera +
+                                 ": expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2");
       }
     }
     // Each shape holds its incoherent and camera rays with their reference hits, packets and
@@ -120,7 +148,8 @@ int main(int argc, char** argv) {
       return cli.count("--repetitions") > 0 ? settings.repetitions : settings.quick ? 1 : fallback;
     };
     const bool renderSuite = paperTable->parsed() || povCompare->parsed() || povScale->parsed();
-    if (renderSuite && (!csvPath.empty() || cli.count("--rays") > 0 || !camera.empty() || cli.count("--min-time") > 0)) {
+    if (renderSuite &&
+        (!csvPath.empty() || cli.count("--rays") > 0 || !camera.empty() || cli.count("--min-time") > 0)) {
       throw std::runtime_error("--csv, --rays, --camera and --min-time belong to speed-error and scaling");
     }
     const auto writeDocument = [&](const nlohmann::ordered_json& document) {
@@ -144,8 +173,9 @@ int main(int argc, char** argv) {
       // Documented commands, not CI steps: without POV-Ray there is nothing to compare.
       const std::optional<std::string> povray = findPovray();
       if (!povray) {
-        std::fprintf(stderr, "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, "
-                             "or scripts/install-deps.sh --test)\n");
+        std::fprintf(stderr,
+                     "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, "
+                     "or scripts/install-deps.sh --test)\n");
         return;
       }
       nlohmann::ordered_json document = runInfo(commandLine);

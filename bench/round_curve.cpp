@@ -67,7 +67,8 @@ std::variant<RoundCurveFit, std::string> fitRoundCurve(const SmoothProfile& prof
                  text(piece.end.r) + "): a round curve cannot sweep a horizontal piece (z'(u) = 0 leaves its circle " +
                  "undefined), and Embree's discs are whole";
         }
-        fit.discs.push_back({piece.start.z, std::max(piece.start.r, piece.end.r), piece.end.r > piece.start.r ? -1.0 : 1.0});
+        fit.discs.push_back(
+            {piece.start.z, std::max(piece.start.r, piece.end.r), piece.end.r > piece.start.r ? -1.0 : 1.0});
         continue;
       }
       SweptPiece line;
@@ -87,8 +88,9 @@ std::variant<RoundCurveFit, std::string> fitRoundCurve(const SmoothProfile& prof
       const double sense = piece.turn > 0 ? 1.0 : -1.0;
       arc.a0 = piece.angle0 + sense * from;
       arc.turn = sense * (to - from);
-      arc.start = from == 0.0 ? piece.start : Point2{piece.centre.r + piece.radius * std::cos(arc.a0),
-                                                     piece.centre.z + piece.radius * std::sin(arc.a0)};
+      arc.start = from == 0.0 ? piece.start
+                              : Point2{piece.centre.r + piece.radius * std::cos(arc.a0),
+                                       piece.centre.z + piece.radius * std::sin(arc.a0)};
       arc.end = to == std::abs(piece.turn) ? piece.end
                                            : Point2{piece.centre.r + piece.radius * std::cos(arc.a0 + arc.turn),
                                                     piece.centre.z + piece.radius * std::sin(arc.a0 + arc.turn)};
@@ -129,9 +131,9 @@ std::variant<RoundCurveFit, std::string> fitRoundCurve(const SmoothProfile& prof
       const double handle = 4.0 / 3.0 * std::tan(std::abs(step) / 4) * piece.radius;
       const double sense = step > 0 ? 1.0 : -1.0;  // tangent of travel: sense (-sin, cos)
       const Point2 p0{piece.centre.r + piece.radius * std::cos(a), piece.centre.z + piece.radius * std::sin(a)};
-      const Point2 p3 = j + 1 == piece.segments
-                            ? piece.end
-                            : Point2{piece.centre.r + piece.radius * std::cos(b), piece.centre.z + piece.radius * std::sin(b)};
+      const Point2 p3 = j + 1 == piece.segments ? piece.end
+                                                : Point2{piece.centre.r + piece.radius * std::cos(b),
+                                                         piece.centre.z + piece.radius * std::sin(b)};
       appendControl(fit.controlPoints, {p0.r - handle * sense * std::sin(a), p0.z + handle * sense * std::cos(a)});
       appendControl(fit.controlPoints, {p3.r + handle * sense * std::sin(b), p3.z - handle * sense * std::cos(b)});
       appendControl(fit.controlPoints, p3);
@@ -160,10 +162,10 @@ void attachRoundCurve(RTCDevice device, RTCScene scene, const RoundCurveFit& fit
 
   RTCGeometry discs = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
   if (discs == nullptr) throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT) failed");
-  auto* centres = static_cast<float*>(
-      rtcSetNewGeometryBuffer(discs, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), fit.discs.size()));
-  auto* normals = static_cast<float*>(
-      rtcSetNewGeometryBuffer(discs, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), fit.discs.size()));
+  auto* centres = static_cast<float*>(rtcSetNewGeometryBuffer(discs, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                                              4 * sizeof(float), fit.discs.size()));
+  auto* normals = static_cast<float*>(rtcSetNewGeometryBuffer(discs, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), fit.discs.size()));
   if (centres == nullptr || normals == nullptr) {
     rtcReleaseGeometry(discs);
     throw std::runtime_error("allocating Embree discs failed");

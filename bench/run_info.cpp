@@ -37,7 +37,8 @@ nlohmann::ordered_json runInfo(const std::string& commandLine) {
   nlohmann::ordered_json info;
   info["command"] = commandLine;
   info["date"] = today();
-  info["machine"] = {{"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}, {"load_before", loadAverage()}};
+  info["machine"] = {
+      {"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}, {"load_before", loadAverage()}};
   info["embree"] = RTC_VERSION_STRING;
   return info;
 }

@@ -187,8 +187,10 @@ std::vector<int> SmoothProfile::arcSegments(int points) const {
   std::vector<std::size_t> arcs;
   int budget = points - 1;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
-    if (pieces_[i].radius > 0.0) arcs.push_back(i);
-    else budget -= 1;
+    if (pieces_[i].radius > 0.0)
+      arcs.push_back(i);
+    else
+      budget -= 1;
   }
   if (budget < int(arcs.size())) {
     throw std::invalid_argument(name_ + ": " + std::to_string(points) + " points cannot sample " +
@@ -216,7 +218,8 @@ std::vector<int> SmoothProfile::arcSegments(int points) const {
   };
   for (; used < budget; ++used) {
     std::size_t worst = arcs.front();
-    for (std::size_t i : arcs) if (sagittaOf(i) > sagittaOf(worst)) worst = i;
+    for (std::size_t i : arcs)
+      if (sagittaOf(i) > sagittaOf(worst)) worst = i;
     ++segments[worst];
   }
   return segments;
@@ -252,7 +255,8 @@ double SmoothProfile::uniformError(int points) const {
   double worst = 0.0;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     const ProfilePiece& piece = pieces_[i];
-    if (piece.radius > 0.0) worst = std::max(worst, piece.radius * (1.0 - std::cos(std::abs(piece.turn) / (2.0 * segments[i]))));
+    if (piece.radius > 0.0)
+      worst = std::max(worst, piece.radius * (1.0 - std::cos(std::abs(piece.turn) / (2.0 * segments[i]))));
   }
   return worst;
 }
@@ -277,7 +281,8 @@ double SmoothProfile::sampleError(int points) const {
   double worst = 0.0;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     const ProfilePiece& piece = pieces_[i];
-    if (piece.radius > 0.0) worst = std::max(worst, piece.radius * (1.0 - std::cos(std::abs(piece.turn) / (2.0 * segments[i]))));
+    if (piece.radius > 0.0)
+      worst = std::max(worst, piece.radius * (1.0 - std::cos(std::abs(piece.turn) / (2.0 * segments[i]))));
   }
   return worst;
 }

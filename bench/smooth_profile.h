@@ -28,8 +28,8 @@ struct ProfilePiece {
 
 struct ClosestPoint {
   Point2 point;
-  Point2 normal;     // unit, to the right of travel (revolve's convention: outwards for a solid)
-  double distance;   // >= 0
+  Point2 normal;          // unit, to the right of travel (revolve's convention: outwards for a solid)
+  double distance;        // >= 0
   double signedDistance;  // negative inside the solid
 };
 

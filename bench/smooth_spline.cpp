@@ -26,7 +26,8 @@ SmoothSpline bezierOf(const SmoothProfile& profile, double maxError) {
     const double theta = piece.turn / count;
     // Tangent length 4/3 tan(theta / 4) R along the travel direction at each end.
     const double k = 4.0 / 3.0 * std::tan(theta / 4.0) * piece.radius;
-    const double side = piece.turn > 0.0 ? 1.0 : -1.0;  // travel is counter-clockwise about the centre when turning left
+    const double side =
+        piece.turn > 0.0 ? 1.0 : -1.0;  // travel is counter-clockwise about the centre when turning left
     for (int i = 0; i < count; ++i) {
       const double a0 = piece.angle0 + i * theta, a1 = a0 + theta;
       const Point2 p0 = piece.at(double(i) / count), p1 = i + 1 == count ? piece.end : piece.at(double(i + 1) / count);

@@ -36,8 +36,14 @@ Ladders laddersFor(const RunSettings& settings) {
   // Meshes up to 2^23 triangles (a 2048 x 2048 grid): past that, building the grid's largest meshes
   // takes longer than the whole rest of the run. Round curves reach their single-precision floor by
   // 16 segments (cubic arcs: error ~ theta^6); up to 1,024 shows what more of them costs.
-  return {powersOfTwo(16, 4096), powersOfTwo(16, 1024), powersOfTwo(16, 4096), powersOfTwo(8, 4096), 1u << 23,
-          powersOfTwo(4, 1024), {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7}, powersOfTwo(16, 4096)};
+  return {powersOfTwo(16, 4096),
+          powersOfTwo(16, 1024),
+          powersOfTwo(16, 4096),
+          powersOfTwo(8, 4096),
+          1u << 23,
+          powersOfTwo(4, 1024),
+          {1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6, 3e-7, 1e-7},
+          powersOfTwo(16, 4096)};
 }
 
 double facetError(double rMax, int slices) { return rMax * (1.0 - std::cos(std::numbers::pi / slices)); }
@@ -122,7 +128,8 @@ class ShapeBench {
       result.incoherent =
           measureErrors(scene.scene(), rays_.incoherent, rays_.incoherentReference, tracer_, result_.size, oriented);
       if (!rays_.camera.empty()) {
-        result.camera = measureErrors(scene.scene(), rays_.camera, rays_.cameraReference, tracer_, result_.size, oriented);
+        result.camera =
+            measureErrors(scene.scene(), rays_.camera, rays_.cameraReference, tracer_, result_.size, oriented);
       }
     }
     const std::size_t index = result_.configs.size();
@@ -131,13 +138,20 @@ class ShapeBench {
       timed_.push_back({index, mode});
       const std::string name = profile_.name() + " " + config.label() + " " + mode;
       const std::string m = mode;
-      if (m == kIncoherent1) timer.add(name, singleRayBatch(scene.scene(), rays_.incoherent));
-      else if (m == kCamera1) timer.add(name, singleRayBatch(scene.scene(), rays_.camera));
-      else if (m == kCamera8) timer.add(name, packetBatch(scene.scene(), rays_.cameraPackets));
-      else if (m == kIncoherentAll) timer.add(name, threadedBatch(scene.scene(), rays_.incoherent), true);
-      else if (m == kOccluded1) timer.add(name, occludedBatch(scene.scene(), rays_.incoherent));
-      else if (m == kOccluded8) timer.add(name, occludedPacketBatch(scene.scene(), rays_.cameraPackets));
-      else throw std::logic_error("unknown timing mode " + m);
+      if (m == kIncoherent1)
+        timer.add(name, singleRayBatch(scene.scene(), rays_.incoherent));
+      else if (m == kCamera1)
+        timer.add(name, singleRayBatch(scene.scene(), rays_.camera));
+      else if (m == kCamera8)
+        timer.add(name, packetBatch(scene.scene(), rays_.cameraPackets));
+      else if (m == kIncoherentAll)
+        timer.add(name, threadedBatch(scene.scene(), rays_.incoherent), true);
+      else if (m == kOccluded1)
+        timer.add(name, occludedBatch(scene.scene(), rays_.incoherent));
+      else if (m == kOccluded8)
+        timer.add(name, occludedPacketBatch(scene.scene(), rays_.cameraPackets));
+      else
+        throw std::logic_error("unknown timing mode " + m);
     }
   }
 
@@ -146,7 +160,8 @@ class ShapeBench {
   ShapeResult finish(Timer& timer) {
     std::fprintf(stderr, "  timing %zu jobs\n", timed_.size());
     const std::vector<Throughput> speeds = timer.run();
-    for (std::size_t i = 0; i < timed_.size(); ++i) result_.configs[timed_[i].first].speed[timed_[i].second] = speeds[i];
+    for (std::size_t i = 0; i < timed_.size(); ++i)
+      result_.configs[timed_[i].first].speed[timed_[i].second] = speeds[i];
     scenes_.clear();
     return std::move(result_);
   }
@@ -171,7 +186,8 @@ class ShapeBench {
 
 }  // namespace
 
-std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings, const std::vector<std::string>& only) {
+std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings,
+                                       const std::vector<std::string>& only) {
   const MemoryMonitor monitor(device);
   const Ladders ladders = laddersFor(settings);
   const std::vector<const char*> allModes(std::begin(kModes), std::end(kModes));
@@ -196,7 +212,8 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
     }
     // Embree's own curves: the cone curve on MIBIT's very polylines, the round curve fitted anew.
     for (int n : ladders.mibitPoints) bench.add({MethodKind::embreeCone, ShellKind::cylinder, n}, allModes, timer);
-    for (int n : ladders.roundSegments) bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, allModes, timer);
+    for (int n : ladders.roundSegments)
+      bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, allModes, timer);
     // Meshes whose two errors (the profile's chords, the slices' facets) are within a factor of 16
     // of each other: a mesh far off that balance is beaten by one with fewer triangles.
     for (int n : ladders.meshPoints) {
@@ -221,7 +238,8 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
       }
     }
     for (int n : ladders.uniformPoints) {
-      if (n > int(profile.pieces().size())) bench.add({MethodKind::uniform, ShellKind::cylinder, n}, {kIncoherent1}, timer);
+      if (n > int(profile.pieces().size()))
+        bench.add({MethodKind::uniform, ShellKind::cylinder, n}, {kIncoherent1}, timer);
     }
     ShapeResult result = bench.finish(timer);
     matchErrorLevels(result, kErrorLevels);
@@ -276,7 +294,7 @@ void comparePolylinePoints(ShapeResult& shape, const SmoothProfile& profile) {
     if (!(row.error > 0.0)) continue;  // no arcs: nothing to compare
     row.adaptivePoints = int(Profile::fromCurve(spline, profile.sampleError(n) - smooth.error).points().size());
     int low = int(profile.pieces().size()) + 1, high = 1 << 22;  // `high` is within the error
-    while (low < high) {  // the uniform error falls as points are added
+    while (low < high) {                                         // the uniform error falls as points are added
       const int middle = low + (high - low) / 2;
       if (profile.uniformError(middle) <= profile.sampleError(n)) {
         high = middle;
@@ -300,7 +318,8 @@ void matchErrorLevels(ShapeResult& shape, const std::vector<double>& levels) {
         const std::optional<ErrorSummary>& error = camera ? c.camera : c.incoherent;
         const auto speed = c.speed.find(mode);
         if (!error || speed == c.speed.end() || error->hits == 0 || !(error->residualMax <= level)) continue;
-        const bool mibit = c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary;
+        const bool mibit =
+            c.config.kind == MethodKind::mibit && c.config.shell == ShellKind::cylinder && !c.config.binary;
         const bool mesh = c.config.kind == MethodKind::mesh;
         const auto keepFastest = [&](std::optional<std::size_t>& fastest) {
           if (!fastest || speed->second.median > shape.configs[*fastest].speed.at(mode).median) fastest = i;

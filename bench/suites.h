@@ -14,7 +14,8 @@ namespace revolve::bench {
 inline const std::vector<double> kErrorLevels = {1e-3, 1e-4, 1e-5, 1e-6};
 
 // Every method on every test shape (or on the shapes named in `only`, if any).
-std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings, const std::vector<std::string>& only);
+std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& settings,
+                                       const std::vector<std::string>& only);
 
 // MIBIT, the linear scan, Kajiya's strip tree, meshes and Embree's curves on the vase, 16 to 32,768
 // points (round curves: Bézier segments, up to 4,096).

@@ -15,11 +15,11 @@ SmoothProfile torusShape() {
 SmoothProfile vaseShape() {
   return SmoothProfile("vase", {0.0, 0.0}, 0.0)
       .line(0.16)
-      .arc(0.04, 80.0)    // the foot's rounded edge
-      .arc(0.60, 30.0)    // the belly, widening then turning inwards
-      .arc(0.50, -50.0)   // the concave neck
-      .arc(0.10, -30.0)   // the lip flaring out
-      .corner(150.0)      // a sharp rim, then the flat top
+      .arc(0.04, 80.0)   // the foot's rounded edge
+      .arc(0.60, 30.0)   // the belly, widening then turning inwards
+      .arc(0.50, -50.0)  // the concave neck
+      .arc(0.10, -30.0)  // the lip flaring out
+      .corner(150.0)     // a sharp rim, then the flat top
       .lineToAxis();
 }
 
@@ -28,9 +28,9 @@ SmoothProfile gobletShape() {
       .line(0.24)
       .arc(0.012, 180.0)  // the foot's rim
       .line(0.12)
-      .arc(0.08, -90.0)   // foot rising into the stem
+      .arc(0.08, -90.0)  // foot rising into the stem
       .line(0.14)
-      .arc(0.03, -60.0)   // the knob
+      .arc(0.03, -60.0)  // the knob
       .arc(0.03, 120.0)
       .arc(0.03, -60.0)
       .line(0.10)
@@ -45,11 +45,11 @@ SmoothProfile gobletShape() {
 SmoothProfile bottleShape() {
   return SmoothProfile("bottle", {0.0, 0.0}, 0.0)
       .line(0.16)
-      .arc(0.04, 90.0)    // the base's fillet
-      .line(0.50)         // the body
-      .arc(0.12, 60.0)    // the shoulder
+      .arc(0.04, 90.0)  // the base's fillet
+      .line(0.50)       // the body
+      .arc(0.12, 60.0)  // the shoulder
       .line(0.08)
-      .arc(0.05, -60.0)   // into the neck
+      .arc(0.05, -60.0)  // into the neck
       .line(0.20)
       .arc(0.012, -90.0)  // the lip: a rounded ring
       .line(0.012)

@@ -87,10 +87,12 @@ std::vector<Throughput> Timer::run() {
   for (auto& [job, samples] : collector.samples) {
     std::sort(samples.begin(), samples.end());
     const std::size_t n = samples.size();
-    results[job] = {n % 2 == 1 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]), samples.front(), samples.back()};
+    results[job] = {n % 2 == 1 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]), samples.front(),
+                    samples.back()};
   }
   for (std::size_t i = 0; i < jobs_.size(); ++i) {
-    if (collector.samples.count(i) == 0) throw std::runtime_error("benchmark job " + jobs_[i].name + " produced no timing");
+    if (collector.samples.count(i) == 0)
+      throw std::runtime_error("benchmark job " + jobs_[i].name + " produced no timing");
   }
   jobs_.clear();
   return results;

@@ -14,16 +14,26 @@ std::string MethodConfig::method() const {
     case MethodKind::mibit:
       if (shell == ShellKind::cylinder) return binary ? "mibit_binary" : "mibit";
       return shell == ShellKind::cone ? "mibit_cone" : "mibit_hybrid";
-    case MethodKind::linear: return "linear";
-    case MethodKind::kajiya: return "kajiya";
-    case MethodKind::mesh: return "mesh";
-    case MethodKind::sphere: return "sphere";
-    case MethodKind::embreeCone: return "embree_cone";
-    case MethodKind::embreeRoundCurve: return "embree_round_curve";
-    case MethodKind::spline: return "spline";
-    case MethodKind::adaptive: return "adaptive";
-    case MethodKind::uniform: return "uniform";
-    case MethodKind::adaptiveMesh: return "mesh_adaptive";
+    case MethodKind::linear:
+      return "linear";
+    case MethodKind::kajiya:
+      return "kajiya";
+    case MethodKind::mesh:
+      return "mesh";
+    case MethodKind::sphere:
+      return "sphere";
+    case MethodKind::embreeCone:
+      return "embree_cone";
+    case MethodKind::embreeRoundCurve:
+      return "embree_round_curve";
+    case MethodKind::spline:
+      return "spline";
+    case MethodKind::adaptive:
+      return "adaptive";
+    case MethodKind::uniform:
+      return "uniform";
+    case MethodKind::adaptiveMesh:
+      return "mesh_adaptive";
   }
   return "?";
 }
@@ -32,14 +42,20 @@ std::string MethodConfig::label() const {
   char tolerance[16];
   std::snprintf(tolerance, sizeof tolerance, "%.0e", this->tolerance);
   switch (kind) {
-    case MethodKind::sphere: return "analytic sphere";
-    case MethodKind::mesh: return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
-    case MethodKind::spline: return "spline exact";
-    case MethodKind::adaptive: return "adaptive " + std::string(tolerance) + " (" + std::to_string(points) + ")";
+    case MethodKind::sphere:
+      return "analytic sphere";
+    case MethodKind::mesh:
+      return "mesh " + std::to_string(points) + "x" + std::to_string(slices);
+    case MethodKind::spline:
+      return "spline exact";
+    case MethodKind::adaptive:
+      return "adaptive " + std::string(tolerance) + " (" + std::to_string(points) + ")";
     case MethodKind::adaptiveMesh:
       return "mesh adapt " + std::string(tolerance) + " " + std::to_string(points) + "x" + std::to_string(slices);
-    case MethodKind::embreeRoundCurve: return method() + " " + std::to_string(points) + " seg";
-    default: return method() + " " + std::to_string(points);
+    case MethodKind::embreeRoundCurve:
+      return method() + " " + std::to_string(points) + " seg";
+    default:
+      return method() + " " + std::to_string(points);
   }
 }
 
@@ -59,19 +75,22 @@ bool MemoryMonitor::record(void* user, ssize_t bytes, bool /*post*/) {
   return true;
 }
 
-TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile, const Spline* splineOrNull,
-                         const MethodConfig& config, const AnalyticSphere& sphere)
+TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const SmoothProfile& profile,
+                         const Spline* splineOrNull, const MethodConfig& config, const AnalyticSphere& sphere)
     : config_(config), sphere_(sphere) {
   const bool curveMethod = config.kind == MethodKind::spline || config.kind == MethodKind::adaptive ||
                            config.kind == MethodKind::uniform || config.kind == MethodKind::adaptiveMesh;
-  if (curveMethod && splineOrNull == nullptr) throw std::invalid_argument(config.method() + " needs the profile's spline");
+  if (curveMethod && splineOrNull == nullptr)
+    throw std::invalid_argument(config.method() + " needs the profile's spline");
   const std::int64_t before = monitor.bytes();
   const auto start = std::chrono::steady_clock::now();
   scene_ = rtcNewScene(device);
   if (scene_ == nullptr) throw std::runtime_error("rtcNewScene failed");
   RTCGeometry geometry = nullptr;
   switch (config.kind) {
-    case MethodKind::sphere: geometry = newAnalyticSphereGeometry(device, sphere_); break;
+    case MethodKind::sphere:
+      geometry = newAnalyticSphereGeometry(device, sphere_);
+      break;
     case MethodKind::embreeCone:
       coneCurve_ = std::make_unique<ConeCurveGeometry>(device, Profile(profile.sample(config.points)));
       points_ = config.points;
@@ -85,8 +104,9 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
     }
     case MethodKind::mesh:
     case MethodKind::adaptiveMesh: {
-      const Profile polyline = config.kind == MethodKind::mesh ? Profile(profile.sample(config.points))
-                                                               : Profile::fromCurve(*splineOrNull, config.tolerance * profile.size());
+      const Profile polyline = config.kind == MethodKind::mesh
+                                   ? Profile(profile.sample(config.points))
+                                   : Profile::fromCurve(*splineOrNull, config.tolerance * profile.size());
       geometry = newTessellatedGeometry(device, polyline, std::uint32_t(config.slices));
       triangles_ = 2ull * polyline.segmentCount() * std::uint64_t(config.slices);
       points_ = int(polyline.points().size());
@@ -99,8 +119,9 @@ TracedScene::TracedScene(RTCDevice device, const MemoryMonitor& monitor, const S
         shape_ = std::make_unique<Shape>(*splineOrNull);
         points_ = int(splineOrNull->points().size());
       } else {
-        Profile polyline = config.kind == MethodKind::adaptive ? Profile::fromCurve(*splineOrNull, config.tolerance * profile.size())
-                                                               : Profile(profile.sampleUniform(config.points));
+        Profile polyline = config.kind == MethodKind::adaptive
+                               ? Profile::fromCurve(*splineOrNull, config.tolerance * profile.size())
+                               : Profile(profile.sampleUniform(config.points));
         points_ = int(polyline.points().size());
         shape_ = std::make_unique<Shape>(std::move(polyline));
       }

@@ -22,7 +22,19 @@ namespace revolve::bench {
 //   adaptive: its polyline within a tolerance (Profile::fromCurve), traced by default MIBIT;
 //   uniform: the curve sampled at even steps along it (SmoothProfile::sampleUniform), default MIBIT;
 //   adaptiveMesh: the adaptive polyline tessellated.
-enum class MethodKind { mibit, linear, kajiya, mesh, sphere, embreeCone, embreeRoundCurve, spline, adaptive, uniform, adaptiveMesh };
+enum class MethodKind {
+  mibit,
+  linear,
+  kajiya,
+  mesh,
+  sphere,
+  embreeCone,
+  embreeRoundCurve,
+  spline,
+  adaptive,
+  uniform,
+  adaptiveMesh
+};
 
 struct MethodConfig {
   MethodKind kind = MethodKind::mibit;
@@ -30,13 +42,13 @@ struct MethodConfig {
   // Profile points (not for the analytic sphere; for adaptive, found when built); Bézier segments
   // of a round curve.
   int points = 0;
-  int slices = 0;                         // meshes only
-  bool binary = false;                    // MIBIT with the paper's binary tree (BuildOptions::wideNodes off)
-  double tolerance = 0;                   // adaptive and adaptiveMesh: Profile::fromCurve's, relative to the size
+  int slices = 0;        // meshes only
+  bool binary = false;   // MIBIT with the paper's binary tree (BuildOptions::wideNodes off)
+  double tolerance = 0;  // adaptive and adaptiveMesh: Profile::fromCurve's, relative to the size
   // "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear", "kajiya", "mesh", "sphere",
   // "embree_cone", "embree_round_curve", "spline", "adaptive", "uniform", "mesh_adaptive"
   std::string method() const;
-  std::string label() const;              // method and resolution, e.g. "mesh 64x128", "embree_round_curve 8 seg"
+  std::string label() const;  // method and resolution, e.g. "mesh 64x128", "embree_round_curve 8 seg"
   // Embree's curves orient Ng away from their centre line whatever side the solid is on: their
   // normals are compared with the surface's up to sign.
   bool orientedNormals() const { return kind != MethodKind::embreeCone && kind != MethodKind::embreeRoundCurve; }

@@ -7,9 +7,10 @@
 #   (none)   what the main job builds and runs: the library and revolve-render
 #   --test   also what the whole test suite and the benchmarks need: GoogleTest, Google Benchmark,
 #            clang with its sanitizer and libFuzzer runtimes, matplotlib (revolve-lidar --plot,
-#            bench/plot_results.py), POV-Ray 3.7 (revolve-bench pov, the export's round-trip test)
-#            and the DejaVu font (the side-by-side figure's labels); and the Python package's build and
-#            tests: headers, pybind11, numpy, pytest, Dask distributed and Open3D (compared against)
+#            bench/plot_results.py), POV-Ray 3.7 (revolve-bench pov, the export's round-trip test),
+#            the DejaVu font (the side-by-side figure's labels), clang-format (scripts/check-format.sh);
+#            and the Python package's build and tests: headers, pybind11, numpy, pytest, Dask
+#            distributed and Open3D (compared against)
 set -euo pipefail
 
 packages=(
@@ -23,7 +24,7 @@ packages=(
 case "${1:-}" in
   "") ;;
   --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-dev python3-matplotlib povray fonts-dejavu-core
-                     python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed python3-open3d) ;;
+                     clang-format python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed python3-open3d) ;;
   *) echo "usage: $0 [--test]" >&2; exit 2 ;;
 esac
 

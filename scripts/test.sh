@@ -12,6 +12,9 @@ echo "== documentation links"
 # Every relative link and image of README.md and docs/ names a file (and heading) that exists.
 /usr/bin/python3 scripts/check-links.py
 
+echo "== formatting"
+scripts/check-format.sh
+
 echo "== Release build and tests (the Python package's pytest suite among them)"
 # Tests and benchmark on explicitly: build/ may have been configured by scripts/main.sh without them.
 # The Python package too, so that a missing dependency fails here instead of skipping its tests.

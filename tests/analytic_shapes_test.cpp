@@ -20,14 +20,16 @@ using reference::RefHit;
 using reference::RefRay;
 
 RefRay toRef(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 double length(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
 
 // |cos| of the angle between the ray and the reference hit's normal.
 double incidence(const Ray& ray, const RefHit& hit) {
-  return std::abs(double(hit.nx * ray.direction.x + hit.ny * ray.direction.y + hit.nz * ray.direction.z)) / length(ray.direction);
+  return std::abs(double(hit.nx * ray.direction.x + hit.ny * ray.direction.y + hit.nz * ray.direction.z)) /
+         length(ray.direction);
 }
 
 // Whether the reference's hit/miss verdict flips when the ray's origin moves by 1e-9 of the shape's
@@ -84,8 +86,8 @@ Comparison compareWithClosedForm(const std::vector<Point2>& points,
         continue;
       }
       if (++reported <= 5) {
-        ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
-                      << ", " << ray.direction.y << ", " << ray.direction.z << "): closed form "
+        ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+                      << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << "): closed form "
                       << (expected ? "hits at t=" + std::to_string(double(expected->t)) : std::string("misses"))
                       << ", library " << (got ? "hits at t=" + std::to_string(got->t) : std::string("misses"));
       }
@@ -138,7 +140,8 @@ TEST(AnalyticShapesTest, SegmentFromTheAxisIsAConeWithItsApex) {
 
 TEST(AnalyticShapesTest, HorizontalSegmentIsADiscOrAnAnnulus) {
   const std::vector<Point2> disc{{0.0, 0.25}, {1.0, 0.25}};
-  compareWithClosedForm(disc, [](const RefRay& ray) { return reference::intersectDisc(0.25L, 0.0L, 1.0L, ray); }, 4);
+  compareWithClosedForm(
+      disc, [](const RefRay& ray) { return reference::intersectDisc(0.25L, 0.0L, 1.0L, ray); }, 4);
   const std::vector<Point2> annulus{{0.8, -0.25}, {0.3, -0.25}};
   const Comparison c = compareWithClosedForm(
       annulus, [](const RefRay& ray) { return reference::intersectDisc(-0.25L, 0.8L, 0.3L, ray); }, 5);
@@ -249,8 +252,8 @@ TEST(ClosestPointTest, MatchesTheOraclesMeridianDistanceAndLiesOnTheSurface) {
       const double size = length(box.upper);
       // Computed in double, rounded to float: a few float ulps of the size.
       EXPECT_NEAR(closest.distance, expected, 4 * 0x1p-24 * (expected + size));
-      EXPECT_NEAR(double(reference::meridianDistance(named.points, closest.point.x, closest.point.y, closest.point.z)), 0.0,
-                  4 * 0x1p-24 * size);
+      EXPECT_NEAR(double(reference::meridianDistance(named.points, closest.point.x, closest.point.y, closest.point.z)),
+                  0.0, 4 * 0x1p-24 * size);
       EXPECT_NEAR(length({closest.point.x - p.x, closest.point.y - p.y, closest.point.z - p.z}), expected,
                   4 * 0x1p-24 * (expected + size));
     }

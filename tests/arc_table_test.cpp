@@ -10,8 +10,8 @@
 // to 1,024 steps (rounding 1,024 u L = 2^-43 L): 2^-39 L bounds its lengths. The reference is
 // asked for 2^-56 L. Hermite interpolation of the table is promised within 2^-30 L at every step's
 // middle once the table stops refining below its 1,024-step cap.
-#include "curve/arc_length.h"
 #include "curve/arc_table.h"
+#include "curve/arc_length.h"
 #include "curve/monotone_parts.h"
 #include "support/spline_profiles.h"
 #include "support/test_seeds.h"

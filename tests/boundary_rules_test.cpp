@@ -88,23 +88,22 @@ Ray ray(Vec3 origin, Vec3 direction, float tnear = 0.0f, float tfar = kInf) { re
 // Capped cylinder of radius 1 over z in [0, 1], its wall split at z = 0.5: segments 0 (bottom
 // disc), 1 (wall, heights [0, 0.5)), 2 (wall, [0.5, 1)), 3 (top disc).
 ShapeCases splitCylinder() {
-  ShapeCases s{"capped cylinder r = 1, z in [0, 1], wall vertex at z = 0.5",
-               {{0, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}},
-               {}};
+  ShapeCases s{
+      "capped cylinder r = 1, z in [0, 1], wall vertex at z = 0.5", {{0, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}}, {}};
   // Horizontal rays at vertex heights. Along an axis through the z axis a ray meets the circle of
   // radius 1 at distance |origin| -+ 1 along it: t is exact, and u is exact on the axes.
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (wall vertex) from outside: segment 2's circle",
                      ray({-4, 0, 0.5}, {1, 0, 0}), Expected{3, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from outside, direction of length 2",
-                     ray({-4, 0, 0.5}, {2, 0, 0}), Expected{1.5, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis",
-                     ray({0, 0, 0.5}, {0, -1, 0}), Expected{1, 2, 0.75f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, off the axis",
-                     ray({0.5, 0, 0.5}, {1, 0, 0}), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from outside, direction of length 2", ray({-4, 0, 0.5}, {2, 0, 0}),
+                     Expected{1.5, 2, 0.5f}});
+  s.cases.push_back(
+      {Rule::halfOpenHeight, "z = 0.5 from inside, on the axis", ray({0, 0, 0.5}, {0, -1, 0}), Expected{1, 2, 0.75f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, off the axis", ray({0.5, 0, 0.5}, {1, 0, 0}),
+                     Expected{0.5, 2, 0.0f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim) from outside: segment 1's circle",
                      ray({4, 0, 0}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside, tnear > 0",
-                     ray({0, 0, 0}, {0, 0.5, 0}, 1), Expected{2, 1, 0.25f}});
+  s.cases.push_back(
+      {Rule::halfOpenHeight, "z = 0 from inside, tnear > 0", ray({0, 0, 0}, {0, 0.5, 0}, 1), Expected{2, 1, 0.25f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss",
                      ray({-4, 0, 1}, {1, 0, 0}), std::nullopt});
   // Leaving the solid exactly at tfar and at tnear, in a horizontal plane: from the axis the wall is
@@ -117,10 +116,10 @@ ShapeCases splitCylinder() {
                      ray({0, 0, 0.25}, {1, 0, 0}, 0, std::nextafter(1.0f, 0.0f)), std::nullopt});
   // Tangent to the wall in a horizontal plane: the line y = 1 touches the circle of radius 1 at
   // (0, 1), t = 4; the kernel's quadratic there is x^2 + (1 - 1), whose discriminant is exactly 0.
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.25",
-                     ray({-4, 1, 0.25}, {1, 0, 0}), Expected{4, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.75",
-                     ray({1, -4, 0.75}, {0, 2, 0}), Expected{2, 2, 0.0f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.25", ray({-4, 1, 0.25}, {1, 0, 0}),
+                     Expected{4, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the wall at z = 0.75", ray({1, -4, 0.75}, {0, 2, 0}),
+                     Expected{2, 2, 0.0f}});
   // Hits exactly at tfar on an oblique ray, where the ray enters the solid. (Only entries: at tfar
   // the kernel counts a point on the surface as inside, so an exit exactly at tfar, or at tnear,
   // is not reported.) The hit (1, 0, 0.75) on segment 2 is the point of the ray nearest the
@@ -130,14 +129,14 @@ ShapeCases splitCylinder() {
   // outside (it passes z = 0 at x = 1.1875 and z = 0.5 at x = 1.0625, outside the caps and the
   // vertex circle), with the closest approach to the axis far beyond (t = 1.5).
   const Vec3 from{1.5, 0, -1.25};
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar",
-                     ray(from, {-1, 0, 4}, 0, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar, tnear > 0",
-                     ray(from, {-1, 0, 4}, 0.25, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear = tfar",
-                     ray(from, {-1, 0, 4}, 0.5, 0.5), Expected{0.5, 2, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear",
-                     ray(from, {-1, 0, 4}, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back(
+      {Rule::inclusiveRange, "oblique, hit at t = tfar", ray(from, {-1, 0, 4}, 0, 0.5), Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tfar, tnear > 0", ray(from, {-1, 0, 4}, 0.25, 0.5),
+                     Expected{0.5, 2, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "oblique, hit at t = tnear = tfar", ray(from, {-1, 0, 4}, 0.5, 0.5),
+                     Expected{0.5, 2, 0.0f}});
+  s.cases.push_back(
+      {Rule::inclusiveRange, "oblique, hit at t = tnear", ray(from, {-1, 0, 4}, 0.5), Expected{0.5, 2, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "oblique, tfar one float short of the hit",
                      ray(from, {-1, 0, 4}, 0, std::nextafter(0.5f, 0.0f)), std::nullopt});
   // The same line at other speeds k (-1, 0, 4): the hit at t = 0.5 / k, the centre still at it.
@@ -150,8 +149,8 @@ ShapeCases splitCylinder() {
   // rounds to 1, the same azimuth as 0, and [0, 1) makes it 0. Horizontal, along -x: t = 4 - 1.
   // Obliquely, rising 1/8 a unit, the ray meets the wall at (1, -2^-30, 0.75): there the kernel's t
   // is within double rounding of 3, which rounds to the float 3, and y = -2^-30 exactly.
-  s.cases.push_back({Rule::uWrap, "u just below the +x axis wraps to 0",
-                     ray({4, -0x1p-30f, 0.25}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
+  s.cases.push_back({Rule::uWrap, "u just below the +x axis wraps to 0", ray({4, -0x1p-30f, 0.25}, {-1, 0, 0}),
+                     Expected{3, 1, 0.0f}});
   s.cases.push_back({Rule::uWrap, "u just below the +x axis, oblique ray",
                      ray({4, -0x1p-30f, 0.75 - 3 * 0.125}, {-1, 0, 0.125}), Expected{3, 2, 0.0f}});
   return s;
@@ -166,10 +165,10 @@ ShapeCases plainCylinder() {
   // the ray's stretch in the wall's slab is symmetric about it, so the kernel expands its quadratic
   // exactly there: B = 0 and C = 1 - 1 = 0 exactly, a discriminant of exactly 0. The ray crosses
   // the caps' planes at rho^2 = 1 + x^2 > 1, outside them.
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 1)",
-                     ray({-2, 1, -1.5}, {1, 0, 1}), Expected{2, 1, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (2, 0, 2)",
-                     ray({-2, 1, -1.5}, {2, 0, 2}), Expected{1, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 1)", ray({-2, 1, -1.5}, {1, 0, 1}),
+                     Expected{2, 1, 0.25f}});
+  s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (2, 0, 2)", ray({-2, 1, -1.5}, {2, 0, 2}),
+                     Expected{1, 1, 0.25f}});
   s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, along (1, 0, 0.5)",
                      ray({-2, 1, -0.5}, {1, 0, 0.5}), Expected{2, 1, 0.25f}});
   s.cases.push_back({Rule::tangentTouch, "oblique, tangent to the wall, tfar at the touch",
@@ -192,31 +191,31 @@ ShapeCases frustum() {
   // at |origin| -+ r, divided by the direction's length (a power of two): exact.
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 (cone vertex, r = 0.75) from outside",
                      ray({-4, 0, 0.25}, {1, 0, 0}), Expected{3.25, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.25 from inside",
-                     ray({0, 0, 0.25}, {0, 1, 0}), Expected{0.75, 2, 0.25f}});
+  s.cases.push_back(
+      {Rule::halfOpenHeight, "z = 0.25 from inside", ray({0, 0, 0.25}, {0, 1, 0}), Expected{0.75, 2, 0.25f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (cone to cylinder, r = 0.5) from outside",
                      ray({0, -4, 0.5}, {0, 2, 0}), Expected{1.75, 3, 0.75f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside",
-                     ray({0, 0, 0.5}, {-0.25, 0, 0}), Expected{2, 3, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim, r = 1) from inside",
-                     ray({0, 0, 0}, {-1, 0, 0}), Expected{1, 1, 0.5f}});
+  s.cases.push_back(
+      {Rule::halfOpenHeight, "z = 0.5 from inside", ray({0, 0, 0.5}, {-0.25, 0, 0}), Expected{2, 3, 0.5f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim, r = 1) from inside", ray({0, 0, 0}, {-1, 0, 0}),
+                     Expected{1, 1, 0.5f}});
   // Vertical rays down at x = 0.875 enter the cone where 1 - z = 0.875, z = 0.125, inside segment
   // 1's slab (they pass the top cap and both vertex circles outside them). Every quantity the
   // kernel forms is exact: the direction is (0, 0, -1) times a power of two, and rho = 0.875 and
   // the cone's radius at z = 0.125 are dyadic.
   const Vec3 above{0.875, 0, 2};
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 4)",
-                     ray(above, {0, 0, -4}, 0, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 4)", ray(above, {0, 0, -4}, 0, 0.46875),
+                     Expected{0.46875, 1, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar, tnear > 0",
                      ray(above, {0, 0, -4}, 0.25, 0.46875), Expected{0.46875, 1, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear = tfar",
                      ray(above, {0, 0, -4}, 0.46875, 0.46875), Expected{0.46875, 1, 0.0f}});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear",
-                     ray(above, {0, 0, -4}, 0.46875), Expected{0.46875, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tnear", ray(above, {0, 0, -4}, 0.46875),
+                     Expected{0.46875, 1, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "vertical, tfar one float short of the hit",
                      ray(above, {0, 0, -4}, 0, std::nextafter(0.46875f, 0.0f)), std::nullopt});
-  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 0.5)",
-                     ray(above, {0, 0, -0.5}, 0, 3.75), Expected{3.75, 1, 0.0f}});
+  s.cases.push_back({Rule::inclusiveRange, "vertical, hit at t = tfar (|d| = 0.5)", ray(above, {0, 0, -0.5}, 0, 3.75),
+                     Expected{3.75, 1, 0.0f}});
   s.cases.push_back({Rule::inclusiveRange, "vertical, tfar = 3.5 before the hit at 3.75 (|d| = 0.5)",
                      ray(above, {0, 0, -0.5}, 0, 3.5), std::nullopt});
   // Rising from inside (r = 0.875 < 1 - 0.0625), the ray leaves the cone where 1 - z = 0.875,
@@ -240,15 +239,15 @@ ShapeCases openCone() {
   ShapeCases s{"open cone, apex (0, 0, 1), rim r = 0.5 at z = 0", {{0, 1}, {0.5, 0}}, {}};
   // In the rim's plane the circle of radius 0.5, met along the x axis at 4 - 0.5, and from the axis
   // at 0.5.
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0 (the rim) from outside",
-                     ray({-4, 0, 0}, {1, 0, 0}), Expected{3.5, 0, 0.5f}});
+  s.cases.push_back(
+      {Rule::halfOpenHeight, "z = 0 (the rim) from outside", ray({-4, 0, 0}, {1, 0, 0}), Expected{3.5, 0, 0.5f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 from inside", ray({0, 0, 0}, {0, 1, 0}), Expected{0.5, 0, 0.25f}});
   // In the rim's plane the line y = 0.5 touches the rim circle at (0, 0.5): exactly tangent.
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the rim",
-                     ray({-4, 0.5, 0}, {1, 0, 0}), Expected{4, 0, 0.25f}});
+  s.cases.push_back(
+      {Rule::tangentTouch, "horizontal, tangent to the rim", ray({-4, 0.5, 0}, {1, 0, 0}), Expected{4, 0, 0.25f}});
   // At z = 0.5 the cone's radius is 0.25, exactly: the line y = -0.25 touches it at (0, -0.25).
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the cone at z = 0.5",
-                     ray({-4, -0.25, 0.5}, {1, 0, 0}), Expected{4, 0, 0.75f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the cone at z = 0.5", ray({-4, -0.25, 0.5}, {1, 0, 0}),
+                     Expected{4, 0, 0.75f}});
   s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the rim",
                      ray({-4, std::nextafter(0.5f, 1.0f), 0}, {1, 0, 0}), std::nullopt});
   // Nearly level rays through the apex: origin + direction is exactly (0, 0, 1) (the x and y
@@ -256,11 +255,12 @@ ShapeCases openCone() {
   // apex at t = 1, rising about 1/200, 1/1000 and 1/16000 of its length. Both its sides lie outside the
   // cone (above the apex it is in the mirror nappe's region): only the apex-touch rule reports it.
   // The azimuth of a hit on the axis is arbitrary: u is not checked.
-  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 200",
-                     ray({0x1.75725cp-3f, 0x1.fe1e5cp+0f, 0x1.fce6ecp-1f}, {-0x1.75725cp-3f, -0x1.fe1e5cp+0f, 0x1.8c8ap-8f}),
+  s.cases.push_back(
+      {Rule::apexTouch, "through the apex, rising 1 in 200",
+       ray({0x1.75725cp-3f, 0x1.fe1e5cp+0f, 0x1.fce6ecp-1f}, {-0x1.75725cp-3f, -0x1.fe1e5cp+0f, 0x1.8c8ap-8f}),
+       Expected{1, 0, 0.0f}});
+  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 1,024", ray({2, 0, 1 - 0x1p-9f}, {-2, 0, 0x1p-9f}),
                      Expected{1, 0, 0.0f}});
-  s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 1,024",
-                     ray({2, 0, 1 - 0x1p-9f}, {-2, 0, 0x1p-9f}), Expected{1, 0, 0.0f}});
   s.cases.push_back({Rule::apexTouch, "through the apex, rising 1 in 16,384",
                      ray({0, 2, 1 - 0x1p-13f}, {0, -2, 0x1p-13f}), Expected{1, 0, 0.0f}});
   return s;
@@ -271,10 +271,12 @@ ShapeCases openCone() {
 // inner points on the chord, (0.5, 0.375) and (1.5, 0.125), it is a straight part of a spline: the
 // curve leaf hands it to Wang's kernel, and the same cases hold.
 ShapeCases flatCone(bool asSpline) {
-  ShapeCases s{asSpline ? "flat open cone as a straight Bezier piece" : "flat open cone, apex (0, 0, 0.5), rim r = 2 at z = 0",
-               asSpline ? std::vector<Point2>{{0, 0.5}, {0.5, 0.375}, {1.5, 0.125}, {2, 0}} : std::vector<Point2>{{0, 0.5}, {2, 0}},
-               {},
-               asSpline ? std::optional<SplineKind>(SplineKind::bezier) : std::nullopt};
+  ShapeCases s{
+      asSpline ? "flat open cone as a straight Bezier piece" : "flat open cone, apex (0, 0, 0.5), rim r = 2 at z = 0",
+      asSpline ? std::vector<Point2>{{0, 0.5}, {0.5, 0.375}, {1.5, 0.125}, {2, 0}}
+               : std::vector<Point2>{{0, 0.5}, {2, 0}},
+      {},
+      asSpline ? std::optional<SplineKind>(SplineKind::bezier) : std::nullopt};
   // Steeper than the cone, through the apex: the quadratic's A = ez^2 (dx^2 + dy^2) - er^2 dz^2 is
   // negative and the apex a double root. Beyond the apex (below it) the ray is inside the cone
   // (at depth h it is h from the axis, the cone 4 h), and it leaves through the open rim plane: the
@@ -313,7 +315,8 @@ ShapeCases splineBarrel() {
                SplineKind::bezier};
   s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 (the wall's split) from outside: part 2's circle",
                      ray({-4, 0, 0.5}, {1, 0, 0}), Expected{2.625, 2, 0.5f}});
-  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis", ray({0, 0, 0.5}, {0, -0.5, 0}), Expected{2.75, 2, 0.75f}});
+  s.cases.push_back({Rule::halfOpenHeight, "z = 0.5 from inside, on the axis", ray({0, 0, 0.5}, {0, -0.5, 0}),
+                     Expected{2.75, 2, 0.75f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 0 (bottom rim) from outside: part 1's circle",
                      ray({4, 0, 0}, {-1, 0, 0}), Expected{3, 1, 0.0f}});
   s.cases.push_back({Rule::halfOpenHeight, "z = 1 (top rim): nothing continues upwards, a miss",
@@ -330,8 +333,8 @@ ShapeCases splineBarrel() {
   // x^2 + (1.375^2 - 1.375^2) has a discriminant of exactly 0.
   s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the curved wall at z = 0.5",
                      ray({-4, 1.375, 0.5}, {1, 0, 0}), Expected{4, 2, 0.25f}});
-  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the curved wall at z = 0",
-                     ray({1, -4, 0}, {0, 2, 0}), Expected{2, 1, 0.0f}});
+  s.cases.push_back({Rule::tangentTouch, "horizontal, tangent to the curved wall at z = 0", ray({1, -4, 0}, {0, 2, 0}),
+                     Expected{2, 1, 0.0f}});
   s.cases.push_back({Rule::tangentTouch, "horizontal, one float outside the curved wall",
                      ray({-4, std::nextafter(1.375f, 2.0f), 0.5}, {1, 0, 0}), std::nullopt});
   return s;
@@ -345,9 +348,9 @@ std::vector<ShapeCases> allShapes() {
 // Checking one answer.
 
 std::string describe(const Ray& r) {
-  return "o=(" + std::to_string(r.origin.x) + ", " + std::to_string(r.origin.y) + ", " + std::to_string(r.origin.z) + ") d=(" +
-         std::to_string(r.direction.x) + ", " + std::to_string(r.direction.y) + ", " + std::to_string(r.direction.z) + ") [" +
-         std::to_string(r.tnear) + ", " + std::to_string(r.tfar) + "]";
+  return "o=(" + std::to_string(r.origin.x) + ", " + std::to_string(r.origin.y) + ", " + std::to_string(r.origin.z) +
+         ") d=(" + std::to_string(r.direction.x) + ", " + std::to_string(r.direction.y) + ", " +
+         std::to_string(r.direction.z) + ") [" + std::to_string(r.tnear) + ", " + std::to_string(r.tfar) + "]";
 }
 
 void expectHit(const Case& c, const std::string& path, bool found, float t, std::uint32_t segment, float u) {
@@ -383,7 +386,8 @@ struct EmbreeScene {
 
   explicit EmbreeScene(const Shape& shape) {
     rtcSetDeviceErrorFunction(
-        device.get(), [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
+        device.get(),
+        [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
         nullptr);
     geometry = std::make_unique<Geometry>(device.get(), shape);
     scene.reset(rtcNewScene(device.get()));
@@ -395,8 +399,18 @@ struct EmbreeScene {
 void checkSingleRays(const EmbreeScene& e, const Case& c) {
   embree::RayQuery query;
   RTCRayHit rh{};
-  rh.ray = {c.ray.origin.x, c.ray.origin.y, c.ray.origin.z, c.ray.tnear, c.ray.direction.x, c.ray.direction.y,
-            c.ray.direction.z, 0.0f, c.ray.tfar, ~0u, 0u, 0u};
+  rh.ray = {c.ray.origin.x,
+            c.ray.origin.y,
+            c.ray.origin.z,
+            c.ray.tnear,
+            c.ray.direction.x,
+            c.ray.direction.y,
+            c.ray.direction.z,
+            0.0f,
+            c.ray.tfar,
+            ~0u,
+            0u,
+            0u};
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   RTCRay shadow = rh.ray;
   query.intersect(e.scene.get(), rh);
@@ -449,7 +463,8 @@ void checkPackets(const EmbreeScene& e, const std::vector<Case>& cases) {
       if (!found) {
         EXPECT_EQ(packet.ray.tfar[i], c.ray.tfar) << "rtcIntersect" << N << " changed tfar on a miss: " << c.what;
       }
-      expectHit(c, "rtcIntersect" + std::to_string(N) + lane, found, packet.ray.tfar[i], packet.hit.primID[i], packet.hit.u[i]);
+      expectHit(c, "rtcIntersect" + std::to_string(N) + lane, found, packet.ray.tfar[i], packet.hit.primID[i],
+                packet.hit.u[i]);
     }
   }
 }
@@ -458,7 +473,8 @@ void checkPackets(const EmbreeScene& e, const std::vector<Case>& cases) {
 void checkEveryPath(const Variant& variant, const ShapeCases& shape, const std::vector<Case>& cases) {
   if (shape.spline && variant.options.method == Method::kajiya) return;  // its strips bound polylines only
   SCOPED_TRACE(std::string(variant.name) + ", " + shape.name);
-  const Shape built = shape.spline ? Shape(Spline(*shape.spline, shape.points), variant.options) : Shape(Profile(shape.points), variant.options);
+  const Shape built = shape.spline ? Shape(Spline(*shape.spline, shape.points), variant.options)
+                                   : Shape(Profile(shape.points), variant.options);
   for (const Case& c : cases) {
     const std::optional<Hit> hit = intersect(built, c.ray);
     expectHit(c, "intersect", hit.has_value(), hit ? hit->t : 0.0f, hit ? hit->segment : 0u, hit ? hit->u : 0.0f);
@@ -486,7 +502,9 @@ void checkRule(Rule rule) {
   EXPECT_GE(checked, 2u);  // the table above holds cases of every rule
 }
 
-TEST(BoundaryRulesTest, HorizontalRaysAtVertexHeightsMeetTheCircleOfTheSegmentAbove) { checkRule(Rule::halfOpenHeight); }
+TEST(BoundaryRulesTest, HorizontalRaysAtVertexHeightsMeetTheCircleOfTheSegmentAbove) {
+  checkRule(Rule::halfOpenHeight);
+}
 
 TEST(BoundaryRulesTest, ObliqueRaysHitExactlyAtTfarAndTnear) { checkRule(Rule::inclusiveRange); }
 
@@ -512,7 +530,7 @@ struct QuadraticCase {
   const char* what;
   detail::Quadratic g;
   double x0, x1;
-  bool inside0, inside1;  // g < 0 at the ends, as the caller's predicates say
+  bool inside0, inside1;      // g < 0 at the ends, as the caller's predicates say
   std::vector<double> roots;  // every root in [x0, x1], increasing (a double root twice)
   detail::EndsOnSurface on = {};
 };
@@ -527,8 +545,20 @@ const QuadraticCase kQuadraticCases[] = {
     {"A < 0, D < 0: -(x - 1)^2 - 1 stays inside", {-1, 1, -2}, 0, 2, true, true, {}},
     {"A < 0, D = 0, touching at the end on the surface", {-1, 1, -1}, 0, 1, true, false, {1}, {false, true}},
     {"A = 0: 2x - 1 leaves at 1/2", {0, 1, -1}, 0, 2, true, false, {0.5}},
-    {"A = 0, B = 0: a constant 1 stays outside (parallel to a generator, in its tangent plane)", {0, 0, 1}, 0, 2, false, false, {}},
-    {"A = 0, B = 0, C = 0 with the end signs apart (along the surface): the first point", {0, 0, 0}, 0.5, 2, false, true, {0.5}},
+    {"A = 0, B = 0: a constant 1 stays outside (parallel to a generator, in its tangent plane)",
+     {0, 0, 1},
+     0,
+     2,
+     false,
+     false,
+     {}},
+    {"A = 0, B = 0, C = 0 with the end signs apart (along the surface): the first point",
+     {0, 0, 0},
+     0.5,
+     2,
+     false,
+     true,
+     {0.5}},
 };
 
 TEST(BoundaryRulesTest, ATangentTouchIsAHitWhateverTheSignOfTheLeadingCoefficient) {
@@ -562,14 +592,14 @@ struct WrapPoint {
 // rounds to 1 (and wraps to 0) when atan(|y| / x) / 2 pi < 2^-25, i.e. |y| / x < 1.87e-7, and to
 // 1 - 2^-24 when that fraction lies between 2^-25 and 3 * 2^-25.
 const WrapPoint kWrapPoints[] = {
-    {1, -1e-300, 0.0f},                // 1 - 1.6e-301
-    {1, -0x1p-30, 0.0f},               // 1 - 1.5e-10
-    {1, -0x1p-23, 0.0f},               // 1 - 1.9e-8, below 2^-25 = 3.0e-8 from 1
-    {4, -0x1p-21, 0.0f},               // the same direction
-    {1, -0x1p-22, 1.0f - 0x1p-24f},   // 1 - 3.8e-8: nearer 1 - 2^-24 (6.0e-8 from 1) than 1
-    {1, 0.0, 0.0f},                    // on the axis
+    {1, -1e-300, 0.0f},              // 1 - 1.6e-301
+    {1, -0x1p-30, 0.0f},             // 1 - 1.5e-10
+    {1, -0x1p-23, 0.0f},             // 1 - 1.9e-8, below 2^-25 = 3.0e-8 from 1
+    {4, -0x1p-21, 0.0f},             // the same direction
+    {1, -0x1p-22, 1.0f - 0x1p-24f},  // 1 - 3.8e-8: nearer 1 - 2^-24 (6.0e-8 from 1) than 1
+    {1, 0.0, 0.0f},                  // on the axis
     {1, -0.0, 0.0f},
-    {-1, -1e-300, 0.5f},               // just below the -x axis: 0.5 + 1.6e-301
+    {-1, -1e-300, 0.5f},  // just below the -x axis: 0.5 + 1.6e-301
     {0, -1, 0.75f},
 };
 

@@ -126,15 +126,16 @@ TEST(CylinderClearanceTest, AgreesWithABruteForceOnEveryStandardProfile) {
       double z0 = z(random), z1 = z(random);
       if (z0 > z1) std::swap(z0, z1);
       const UprightCylinder cylinder{d(random), i % 10 == 0 ? 0.0 : radius(random), z0, i % 7 == 0 ? z0 : z1};
-      const MeridianScale scale = i % 3 == 0 ? MeridianScale{} : MeridianScale{factor(random), (i % 2 ? -1 : 1) * factor(random)};
+      const MeridianScale scale =
+          i % 3 == 0 ? MeridianScale{} : MeridianScale{factor(random), (i % 2 ? -1 : 1) * factor(random)};
       const double reach = size * std::max({1.0, scale.radial, std::abs(scale.axial)});
       const CylinderClearance got = cylinderClearance(shape, cylinder, scale);
       const double expected = bruteForceClearance(named.points, cylinder, scale);
       // Both in double from the same inputs: rounding of a few operations on values of the reach.
       EXPECT_NEAR(got.clearance, expected, 1e-12 * reach) << "case " << i;
       // The point returned realises the clearance.
-      EXPECT_NEAR(signedDistance(cylinder.axisDistance - cylinder.radius, cylinder.axisDistance + cylinder.radius, cylinder.zMin,
-                                 cylinder.zMax, got.point.r, got.point.z),
+      EXPECT_NEAR(signedDistance(cylinder.axisDistance - cylinder.radius, cylinder.axisDistance + cylinder.radius,
+                                 cylinder.zMin, cylinder.zMax, got.point.r, got.point.z),
                   got.clearance, 1e-12 * reach);
     }
   }

@@ -23,8 +23,9 @@ struct HitRecord {
 HitRecord traceEmbree(RTCScene scene, const Ray& ray) {
   embree::RayQuery query;
   RTCRayHit rh{};
-  rh.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
-            0.0f, ray.tfar, ~0u, 0u, 0u};
+  rh.ray = {
+      ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
+      ray.tfar,     ~0u,          0u,           0u};
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   query.intersect(scene, rh);
   return {rh.ray.tfar, rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z, rh.hit.u, rh.hit.v, rh.hit.primID, rh.hit.geomID};

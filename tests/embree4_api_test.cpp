@@ -126,8 +126,8 @@ TEST(Embree4Api, InstanceArraysReportInstPrimID) {
     rtcCommitScene(object);
     RTCGeometry array = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE_ARRAY);
     rtcSetGeometryInstancedScene(array, object);
-    auto* transforms = static_cast<float*>(
-        rtcSetNewGeometryBuffer(array, RTC_BUFFER_TYPE_TRANSFORM, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, 12 * sizeof(float), 3));
+    auto* transforms = static_cast<float*>(rtcSetNewGeometryBuffer(
+        array, RTC_BUFFER_TYPE_TRANSFORM, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, 12 * sizeof(float), 3));
     for (int i = 0; i < 3; ++i) {
       const float m[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 10.0f * float(i), 0};
       std::copy(m, m + 12, transforms + 12 * i);

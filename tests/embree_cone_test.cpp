@@ -26,21 +26,21 @@ struct SceneRelease {
   void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
 };
 
-std::string limitationOf(std::vector<Point2> points) {
-  return coneCurveLimitation(Profile(points)).value_or("");
-}
+std::string limitationOf(std::vector<Point2> points) { return coneCurveLimitation(Profile(points)).value_or(""); }
 
 TEST(ConeCurveLimitationTest, RefusesWhatACurveCannotExpressAndSaysWhere) {
   // A step: the horizontal segment between points 2 and 3 is a ring between two cones.
   const std::string step = limitationOf({{0, 0}, {1, 0}, {1, 1}, {0.5, 1}, {0.5, 2}, {0, 2}});
-  EXPECT_NE(step.find("profile point 2 (r = 1, z = 1) to profile point 3 (r = 0.5, z = 1) is horizontal"), std::string::npos)
+  EXPECT_NE(step.find("profile point 2 (r = 1, z = 1) to profile point 3 (r = 0.5, z = 1) is horizontal"),
+            std::string::npos)
       << step;
   // An open end off the axis: Embree would close it with a disc.
   const std::string open = limitationOf({{0, 0}, {1, 0}, {1, 1}});
   EXPECT_NE(open.find("ends at profile point 2 (r = 1, z = 1), off the axis"), std::string::npos) << open;
   // A flat ring as an end: a curve's end disc is whole.
   const std::string ring = limitationOf({{0.5, 0}, {1, 0}, {1, 1}, {0, 1}});
-  EXPECT_NE(ring.find("profile point 0 (r = 0.5, z = 0) to profile point 1 (r = 1, z = 0) is horizontal"), std::string::npos)
+  EXPECT_NE(ring.find("profile point 0 (r = 0.5, z = 0) to profile point 1 (r = 1, z = 0) is horizontal"),
+            std::string::npos)
       << ring;
   // A loop's flat chord has no end to be a disc at.
   const std::string loop = limitationOf({{1, 0}, {2, 0}, {2, 1}, {1, 0}});
@@ -62,12 +62,12 @@ TEST(ConeCurveLimitationTest, RefusesWhatACurveCannotExpressAndSaysWhere) {
 }
 
 TEST(ConeCurveLimitationTest, TakesDiscEndsApexesLoopsAndAxisPointsBetweenSegments) {
-  EXPECT_EQ(limitationOf({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), "");               // a closed can: two end discs
-  EXPECT_EQ(limitationOf({{0, 0}, {1, 1}, {0, 2}}), "");                       // apexes at both ends
+  EXPECT_EQ(limitationOf({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), "");                  // a closed can: two end discs
+  EXPECT_EQ(limitationOf({{0, 0}, {1, 1}, {0, 2}}), "");                          // apexes at both ends
   EXPECT_EQ(limitationOf({{0, 0}, {0.5, 0.5}, {0, 1}, {0.4, 1.5}, {0, 2}}), "");  // touching the axis between
-  EXPECT_EQ(limitationOf({{1, 0}, {2, 1}, {1, 2}, {0.5, 1}, {1, 0}}), "");     // a loop
-  EXPECT_EQ(limitationOf({{0, 1}, {1, 1}, {1, 0}, {0, 0}}), "");               // listed downwards
-  EXPECT_EQ(limitationOf({{0, 0}, {1, 0}, {1, 1}, {0, 1 + 1e-12}}), "");       // flat to Embree: an end disc
+  EXPECT_EQ(limitationOf({{1, 0}, {2, 1}, {1, 2}, {0.5, 1}, {1, 0}}), "");        // a loop
+  EXPECT_EQ(limitationOf({{0, 1}, {1, 1}, {1, 0}, {0, 0}}), "");                  // listed downwards
+  EXPECT_EQ(limitationOf({{0, 0}, {1, 0}, {1, 1}, {0, 1 + 1e-12}}), "");          // flat to Embree: an end disc
 }
 
 struct NamedProfile {
@@ -88,7 +88,8 @@ std::vector<NamedProfile> expressibleProfiles() {
   constexpr double pi = std::numbers::pi;
   std::vector<NamedProfile> profiles;
   // A vase: flat bottom and top discs, a belly and a neck.
-  profiles.push_back({"vase", {{0, 0}, {0.3, 0}, {0.45, 0.2}, {0.5, 0.45}, {0.35, 0.75}, {0.3, 0.85}, {0.38, 1.0}, {0, 1.0}}});
+  profiles.push_back(
+      {"vase", {{0, 0}, {0.3, 0}, {0.45, 0.2}, {0.5, 0.45}, {0.35, 0.75}, {0.3, 0.85}, {0.38, 1.0}, {0, 1.0}}});
   // A sphere polygon ending on the axis (apexes), 32 segments.
   std::vector<Point2> sphere = arcPoints(0, 0.5, 0.5, -pi / 2, pi / 2, 32);
   sphere.front().r = sphere.back().r = 0;
@@ -123,7 +124,8 @@ TEST(ConeCurveTest, AgreesWithMibitWhereTheVerdictIsCertain) {
     rtcCommitScene(scene.get());
 
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-    for (const Point2& p : named.points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+    for (const Point2& p : named.points)
+      rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     const double size = std::max(2 * rMax, zHigh - zLow), zMid = 0.5 * (zLow + zHigh);
     const long double delta = std::ldexp(size, -12);
 
@@ -134,8 +136,10 @@ TEST(ConeCurveTest, AgreesWithMibitWhereTheVerdictIsCertain) {
     for (std::size_t i = 0; i < rayCount; ++i) {
       double u[3] = {normal(random), normal(random), normal(random)};
       const double length = std::hypot(u[0], u[1], u[2]);
-      const Vec3 origin{float(3 * size * u[0] / length), float(3 * size * u[1] / length), float(zMid + 3 * size * u[2] / length)};
-      const Vec3 target{float(2 * rMax * unit(random)), float(2 * rMax * unit(random)), float(zMid + (zHigh - zLow) * unit(random))};
+      const Vec3 origin{float(3 * size * u[0] / length), float(3 * size * u[1] / length),
+                        float(zMid + 3 * size * u[2] / length)};
+      const Vec3 target{float(2 * rMax * unit(random)), float(2 * rMax * unit(random)),
+                        float(zMid + (zHigh - zLow) * unit(random))};
       // Unit directions: Embree's cone kernel assumes them (EmbreeConeKernelAssumesUnitDirections).
       const double d[3] = {double(target.x) - origin.x, double(target.y) - origin.y, double(target.z) - origin.z};
       const double dLength = std::hypot(d[0], d[1], d[2]);
@@ -143,7 +147,8 @@ TEST(ConeCurveTest, AgreesWithMibitWhereTheVerdictIsCertain) {
       ray.origin = origin;
       ray.direction = {float(d[0] / dLength), float(d[1] / dLength), float(d[2] / dLength)};
 
-      const reference::RefRay exact{origin.x, origin.y, origin.z, ray.direction.x, ray.direction.y, ray.direction.z, 0.0L, INFINITY};
+      const reference::RefRay exact{origin.x,        origin.y,        origin.z, ray.direction.x,
+                                    ray.direction.y, ray.direction.z, 0.0L,     INFINITY};
       const bool hit = reference::intersectProfile(named.points, exact).has_value();
       bool robust = true;
       for (int axis = 0; axis < 3 && robust; ++axis) {
@@ -161,13 +166,15 @@ TEST(ConeCurveTest, AgreesWithMibitWhereTheVerdictIsCertain) {
       EXPECT_EQ(intersect(shape, ray).has_value(), hit);
       embree::RayQuery query;
       RTCRayHit rayHit{};
-      rayHit.ray = {origin.x, origin.y, origin.z, 0.0f, ray.direction.x, ray.direction.y, ray.direction.z, 0.0f, INFINITY, ~0u, 0u, 0u};
+      rayHit.ray = {origin.x, origin.y, origin.z, 0.0f, ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
+                    INFINITY, ~0u,      0u,       0u};
       rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       query.intersect(scene.get(), rayHit);
       ASSERT_EQ(rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID, hit);
       if (!hit) continue;
       const long double t = rayHit.ray.tfar;
-      const long double p[3] = {origin.x + t * ray.direction.x, origin.y + t * ray.direction.y, origin.z + t * ray.direction.z};
+      const long double p[3] = {origin.x + t * ray.direction.x, origin.y + t * ray.direction.y,
+                                origin.z + t * ray.direction.z};
       EXPECT_LE(reference::meridianDistance(named.points, p[0], p[1], p[2]), delta);
       // On the segment it names, with revolve's side of that segment.
       const Vec3 ng{rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};

@@ -31,7 +31,8 @@ using ScenePtr = std::unique_ptr<RTCSceneTy, SceneRelease>;
 DevicePtr newDevice() {
   DevicePtr device(rtcNewDevice(nullptr));
   rtcSetDeviceErrorFunction(
-      device.get(), [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
+      device.get(),
+      [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
       nullptr);
   return device;
 }
@@ -53,8 +54,9 @@ struct SingleShapeScene {
 
 RTCRayHit toRayHit(const Ray& ray) {
   RTCRayHit rh{};
-  rh.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
-            0.0f, ray.tfar, ~0u, 0u, 0u};
+  rh.ray = {
+      ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
+      ray.tfar,     ~0u,          0u,           0u};
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   return rh;
@@ -64,7 +66,8 @@ RTCRayHit toRayHit(const Ray& ray) {
 void expectSameHit(const std::optional<Hit>& expected, float tfar, float ngx, float ngy, float ngz, float u, float v,
                    unsigned primID, unsigned geomID, unsigned expectedGeomID, const Ray& ray) {
   SCOPED_TRACE(::testing::Message() << "ray o=(" << ray.origin.x << "," << ray.origin.y << "," << ray.origin.z
-                                    << ") d=(" << ray.direction.x << "," << ray.direction.y << "," << ray.direction.z << ")");
+                                    << ") d=(" << ray.direction.x << "," << ray.direction.y << "," << ray.direction.z
+                                    << ")");
   if (!expected) {
     EXPECT_EQ(geomID, RTC_INVALID_GEOMETRY_ID);
     EXPECT_EQ(tfar, ray.tfar);
@@ -113,7 +116,8 @@ void checkPackets(Method method) {
       valid[i] = random() % 4 == 0 ? 0 : -1;  // some lanes off: they must stay untouched
       const Ray& ray = rays[first + i];
       packet.ray.org_x[i] = ray.origin.x, packet.ray.org_y[i] = ray.origin.y, packet.ray.org_z[i] = ray.origin.z;
-      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y, packet.ray.dir_z[i] = ray.direction.z;
+      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y,
+      packet.ray.dir_z[i] = ray.direction.z;
       packet.ray.tnear[i] = ray.tnear, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
       packet.ray.time[i] = 0.0f, packet.ray.flags[i] = 0u;
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
@@ -166,10 +170,10 @@ TEST_P(EmbreeGlueTest, Occluded1MatchesThePureQuery) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllMethods, EmbreeGlueTest, ::testing::Values(Method::mibit, Method::linear, Method::kajiya),
-                         [](const auto& info) {
-                           return std::string(info.param == Method::mibit ? "mibit" : info.param == Method::linear ? "linear" : "kajiya");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    AllMethods, EmbreeGlueTest, ::testing::Values(Method::mibit, Method::linear, Method::kajiya), [](const auto& info) {
+      return std::string(info.param == Method::mibit ? "mibit" : info.param == Method::linear ? "linear" : "kajiya");
+    });
 
 // Instancing. One shape, one geometry, one object scene, instanced several times. The instances
 // without translation (power-of-two scales, quarter turns) map rays exactly in float, so Embree's
@@ -200,8 +204,10 @@ void checkInstances(const std::vector<Placement>& placements, bool exact) {
   for (const Placement& p : placements) {
     RTCGeometry instance = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(instance, object.get());
-    const Vec3 x = placeVector(p, {1, 0, 0}, false), y = placeVector(p, {0, 1, 0}, false), z = placeVector(p, {0, 0, 1}, false);
-    const float xfm[12] = {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z, p.offset.x, p.offset.y, p.offset.z};  // column-major 3x4
+    const Vec3 x = placeVector(p, {1, 0, 0}, false), y = placeVector(p, {0, 1, 0}, false),
+               z = placeVector(p, {0, 0, 1}, false);
+    const float xfm[12] = {x.x, x.y, x.z, y.x,        y.y,        y.z,
+                           z.x, z.y, z.z, p.offset.x, p.offset.y, p.offset.z};  // column-major 3x4
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
     rtcCommitGeometry(instance);
     ids.push_back(rtcAttachGeometry(world.get(), instance));
@@ -213,7 +219,8 @@ void checkInstances(const std::vector<Placement>& placements, bool exact) {
   std::size_t answered = 0;
   for (std::size_t k = 0; k < placements.size(); ++k) {
     for (const Ray& objectRay : testing::incoherentRays(shape, random, 2000, 2.0)) {
-      const Ray worldRay{placeVector(placements[k], objectRay.origin, true), placeVector(placements[k], objectRay.direction, false)};
+      const Ray worldRay{placeVector(placements[k], objectRay.origin, true),
+                         placeVector(placements[k], objectRay.direction, false)};
       embree::RayQuery query;
       RTCRayHit rh = toRayHit(worldRay);
       query.intersect(world.get(), rh);
@@ -239,8 +246,10 @@ void checkInstances(const std::vector<Placement>& placements, bool exact) {
         // which moves the hit along the ray by at most that over the cosine of incidence; rays
         // within 1/16 of grazing are left out.
         const double length = std::hypot(objectRay.direction.x, objectRay.direction.y, objectRay.direction.z);
-        const double cosine = std::abs(expected->normal.x * objectRay.direction.x + expected->normal.y * objectRay.direction.y +
-                                       expected->normal.z * objectRay.direction.z) / length;
+        const double cosine =
+            std::abs(expected->normal.x * objectRay.direction.x + expected->normal.y * objectRay.direction.y +
+                     expected->normal.z * objectRay.direction.z) /
+            length;
         if (cosine < 1.0 / 16) continue;
         EXPECT_NEAR(rh.ray.tfar * length, expected->t * length, 8 * 0x1p-21 / cosine);
       }
@@ -267,16 +276,18 @@ void rejectLowerHalf(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-std::optional<long double> firstAcceptedReferenceHit(const std::vector<Point2>& points, const Ray& ray, bool& ambiguous) {
-  const reference::RefRay refRay{ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
-                                 ray.direction.z, ray.tnear, ray.tfar};
+std::optional<long double> firstAcceptedReferenceHit(const std::vector<Point2>& points, const Ray& ray,
+                                                     bool& ambiguous) {
+  const reference::RefRay refRay{ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+                                 ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
   ambiguous = false;
   for (const reference::RefHit& hit : reference::allHits(points, refRay)) {
     const long double y = refRay.oy + hit.t * refRay.dy, x = refRay.ox + hit.t * refRay.dx;
     const long double phi = std::atan2(y, x);
-    const long double u = (phi < 0 ? phi + 2 * std::numbers::pi_v<long double> : phi) / (2 * std::numbers::pi_v<long double>);
+    const long double u =
+        (phi < 0 ? phi + 2 * std::numbers::pi_v<long double> : phi) / (2 * std::numbers::pi_v<long double>);
     if (std::abs(y) < 1e-4L * std::abs(x) + 1e-6L) ambiguous = true;  // on the filter's edge
-    if (u >= 0.5L) return hit.t;  // the filter keeps these
+    if (u >= 0.5L) return hit.t;                                      // the filter keeps these
   }
   return std::nullopt;
 }
@@ -328,8 +339,8 @@ TEST(EmbreeFilterTest, SplineShapesOfferEachCrossingToTheFilters) {
   rtcCommitScene(s.scene.get());
   std::size_t checked = 0;
   for (const Ray& ray : testing::incoherentRays(s.shape, random, 2000)) {
-    const reference::RefRay refRay{ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
-                                   ray.direction.z, ray.tnear, ray.tfar};
+    const reference::RefRay refRay{ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+                                   ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
     std::optional<long double> expected;
     bool ambiguous = false;
     for (const reference::RefHit& hit : reference::allCurveHits(spline.bezier(), refRay)) {
@@ -401,7 +412,8 @@ TEST(EmbreeFilterTest, FiltersWorkInPackets) {
       valid[i] = -1;
       const Ray& ray = rays[first + i];
       packet.ray.org_x[i] = ray.origin.x, packet.ray.org_y[i] = ray.origin.y, packet.ray.org_z[i] = ray.origin.z;
-      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y, packet.ray.dir_z[i] = ray.direction.z;
+      packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y,
+      packet.ray.dir_z[i] = ray.direction.z;
       packet.ray.tnear[i] = 0.0f, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
       packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -473,14 +485,17 @@ TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
   for (int i = 0; i < 2000; ++i) {
     const Vec3 p{coordinate(random), coordinate(random), coordinate(random)};
     const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
-    const std::optional<ScenePoint> direct = closestPoint(object.get(), p, std::numeric_limits<float>::infinity(), find, &lookup);
+    const std::optional<ScenePoint> direct =
+        closestPoint(object.get(), p, std::numeric_limits<float>::infinity(), find, &lookup);
     ASSERT_TRUE(direct.has_value());
     EXPECT_NEAR(direct->distance, expected, 1e-6 * (1.0 + expected));
     EXPECT_EQ(direct->instID, RTC_INVALID_GEOMETRY_ID);
-    EXPECT_NEAR(double(reference::meridianDistance(points, direct->point.x, direct->point.y, direct->point.z)), 0.0, 1e-6);
+    EXPECT_NEAR(double(reference::meridianDistance(points, direct->point.x, direct->point.y, direct->point.z)), 0.0,
+                1e-6);
     // The same point seen through the instance: world = 2 R p + (5, 0, 0), distances double.
     const Vec3 w{-2 * p.y + 5, 2 * p.x, 2 * p.z};
-    const std::optional<ScenePoint> viaInstance = closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+    const std::optional<ScenePoint> viaInstance =
+        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
     ASSERT_TRUE(viaInstance.has_value());
     EXPECT_EQ(viaInstance->instID, instID);
     EXPECT_NEAR(viaInstance->distance, 2 * expected, 4e-6 * (1.0 + expected));
@@ -511,17 +526,20 @@ TEST(TessellationTest, MeshNormalsAndHitsAgreeWithTheExactSurface) {
     query.intersect(scene.get(), rh);
     if (!exact || rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
     const double length = std::hypot(ray.direction.x, ray.direction.y, ray.direction.z);
-    const double cosine = -(exact->normal.x * ray.direction.x + exact->normal.y * ray.direction.y +
-                            exact->normal.z * ray.direction.z) / length;
+    const double cosine =
+        -(exact->normal.x * ray.direction.x + exact->normal.y * ray.direction.y + exact->normal.z * ray.direction.z) /
+        length;
     if (cosine < 0.3) continue;  // grazing: the mesh may hit a different facet or miss
     const double ngLength = std::hypot(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-    const double agreement = (rh.hit.Ng_x * exact->normal.x + rh.hit.Ng_y * exact->normal.y + rh.hit.Ng_z * exact->normal.z) / ngLength;
+    const double agreement =
+        (rh.hit.Ng_x * exact->normal.x + rh.hit.Ng_y * exact->normal.y + rh.hit.Ng_z * exact->normal.z) / ngLength;
     EXPECT_GT(agreement, 0.9) << "mesh normal points the other way";
     // Each surface lies within `error` of the other (Hausdorff). Between the two hits both are
     // locally planes, so the hits are at most error / cosine apart along the ray, with the
     // smaller of the two surfaces' cosines of incidence (plus float rounding of both t values).
-    const double facetCosine = -(rh.hit.Ng_x * ray.direction.x + rh.hit.Ng_y * ray.direction.y + rh.hit.Ng_z * ray.direction.z) /
-                               (ngLength * length);
+    const double facetCosine =
+        -(rh.hit.Ng_x * ray.direction.x + rh.hit.Ng_y * ray.direction.y + rh.hit.Ng_z * ray.direction.z) /
+        (ngLength * length);
     EXPECT_NEAR(rh.ray.tfar * length, exact->t * length, error / std::min(cosine, facetCosine) + 1e-5);
     ++compared;
   }
@@ -546,9 +564,9 @@ TEST(EmbreeBoundsTest, HitsWhereTheSurfaceTouchesItsBoxAreNotCulled) {
     const Ray ray{origin, {target.x - origin.x, target.y - origin.y, target.z - origin.z}};
     // The float ray may pass beside the target: the long-double reference says whether it truly
     // hits the cap, and rays within 1e-9 of the rim either way are left out.
-    const std::optional<reference::RefHit> truth = reference::intersectProfile(
-        points, {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, 0.0L,
-                 std::numeric_limits<long double>::infinity()});
+    const std::optional<reference::RefHit> truth =
+        reference::intersectProfile(points, {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
+                                             ray.direction.z, 0.0L, std::numeric_limits<long double>::infinity()});
     if (!truth || truth->segment != 2) continue;
     const long double x = ray.origin.x + truth->t * ray.direction.x, y = ray.origin.y + truth->t * ray.direction.y;
     if (std::hypot(x, y) > 0.5L * (1 - 1e-9L)) continue;

@@ -41,7 +41,8 @@ class QueryFilterScene : public ::testing::Test {
   void SetUp() override {
     device_.reset(rtcNewDevice(nullptr));
     rtcSetDeviceErrorFunction(
-        device_.get(), [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
+        device_.get(),
+        [](void*, RTCError code, const char* message) { ADD_FAILURE() << "Embree error " << code << ": " << message; },
         nullptr);
     shape_ = std::make_unique<Shape>(Profile(std::vector<Point2>{{0, 0}, {1, 0}, {1, 2}, {0, 2}}));
     cylinder_ = std::make_unique<Geometry>(device_.get(), *shape_);

@@ -30,7 +30,8 @@ double curveToPolyline(const Spline& spline, std::span<const Point2> polyline, i
     for (int k = 0; k <= perPiece; ++k) {
       const Point2 p = spline.at(piece, double(k) / perPiece);
       double best = INFINITY;
-      for (std::size_t i = 0; i + 1 < polyline.size(); ++i) best = std::min(best, pointSegmentDistance(p, polyline[i], polyline[i + 1]));
+      for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+        best = std::min(best, pointSegmentDistance(p, polyline[i], polyline[i + 1]));
       worst = std::max(worst, best);
     }
   }
@@ -63,8 +64,8 @@ TEST(FromCurveTest, EveryPolylineStaysWithinItsTolerance) {
 TEST(FromCurveTest, StraightRunsGetNoPoints) {
   // A capped cylinder of straight cubic pieces, each with its inner points on the chord (off the
   // thirds, so its parametrisation is not uniform): the polyline is its four corners.
-  const std::vector<Point2> points{{0, 0},   {0.1, 0},   {0.45, 0},   {0.5, 0},  {0.5, 0.1}, {0.5, 0.9},
-                                   {0.5, 1}, {0.3, 1},   {0.25, 1},   {0, 1}};
+  const std::vector<Point2> points{{0, 0},     {0.1, 0}, {0.45, 0}, {0.5, 0},  {0.5, 0.1},
+                                   {0.5, 0.9}, {0.5, 1}, {0.3, 1},  {0.25, 1}, {0, 1}};
   const Profile polyline = Profile::fromCurve(Spline(SplineKind::bezier, points), 1e-9);
   const std::vector<Point2> corners{{0, 0}, {0.5, 0}, {0.5, 1}, {0, 1}};
   ASSERT_EQ(polyline.points().size(), corners.size());
@@ -73,7 +74,9 @@ TEST(FromCurveTest, StraightRunsGetNoPoints) {
     EXPECT_EQ(polyline.points()[i].z, corners[i].z);
   }
   // Two collinear straight pieces in a row merge into one chord.
-  const Profile merged = Profile::fromCurve(Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0, 0.1}, {0, 0.2}, {0, 0.3}, {0, 0.5}, {0, 0.7}, {0, 1}}), 1e-9);
+  const Profile merged = Profile::fromCurve(
+      Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0, 0.1}, {0, 0.2}, {0, 0.3}, {0, 0.5}, {0, 0.7}, {0, 1}}),
+      1e-9);
   EXPECT_EQ(merged.points().size(), 2u);
 }
 
@@ -116,7 +119,8 @@ TEST(FromCurveTest, NeedsFewerPointsThanEqualParameterSteps) {
 
 TEST(FromCurveTest, RefusesBadTolerances) {
   const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4));
-  for (const double bad : {0.0, -1e-3, double(NAN), double(INFINITY)}) EXPECT_THROW(Profile::fromCurve(sphere, bad), std::invalid_argument) << bad;
+  for (const double bad : {0.0, -1e-3, double(NAN), double(INFINITY)})
+    EXPECT_THROW(Profile::fromCurve(sphere, bad), std::invalid_argument) << bad;
   EXPECT_THROW(Profile::fromCurve(sphere, 1e-14), std::invalid_argument);  // below 2^-40 of the extent
   // A linear spline is its own polyline.
   const std::vector<Point2> points{{0, 0}, {1, 0}, {1, 1}};
@@ -145,7 +149,8 @@ void expectValidWithin(const Spline& spline, double tolerance) {
   for (std::size_t i = 0; i + 1 < p.size(); ++i) {
     for (const double f : {0.0, 0.25, 0.5, 0.75}) {
       const double r = p[i].r + f * (p[i + 1].r - p[i].r), z = p[i].z + f * (p[i + 1].z - p[i].z);
-      EXPECT_LE(double(reference::curveMeridianDistance(spline.bezier(), r, 0, z)), tolerance * (1 + 1e-9)) << "segment " << i;
+      EXPECT_LE(double(reference::curveMeridianDistance(spline.bezier(), r, 0, z)), tolerance * (1 + 1e-9))
+          << "segment " << i;
     }
   }
   EXPECT_EQ(polyline.closed(), spline.closed());
@@ -156,19 +161,22 @@ void expectValidWithin(const Spline& spline, double tolerance) {
 // scenes/spline_still_life.json (its foot's rim, its bowl's thin wall) at the tolerances of a
 // 105-pixel-high view (0.0046) and at 0.01 made crossing chords before.
 TEST(FromCurveTest, ATolerancePastAThinWallIsRefinedIntoAValidPolylineWithinIt) {
-  const Spline wineGlass(SplineKind::bezier,
-                         std::vector<Point2>{{0.0, 0.0},      {0.011333, 0.0},  {0.022667, 0.0},  {0.034, 0.0},     {0.0375, 0.0},
-                                             {0.0375, 0.004}, {0.034, 0.004},   {0.012, 0.006},   {0.004, 0.012},   {0.0035, 0.03},
-                                             {0.0035, 0.048333}, {0.0035, 0.066667}, {0.0035, 0.085}, {0.0035, 0.1}, {0.012, 0.102},
-                                             {0.03, 0.112},   {0.05, 0.124},    {0.05, 0.165},    {0.038, 0.2},     {0.0376, 0.2012},
-                                             {0.0362, 0.2012}, {0.0358, 0.2},   {0.0472, 0.166},  {0.0472, 0.126},  {0.0285, 0.1145},
-                                             {0.014, 0.106},  {0.006, 0.1045},  {0.0, 0.104}});
+  const Spline wineGlass(
+      SplineKind::bezier,
+      std::vector<Point2>{{0.0, 0.0},         {0.011333, 0.0},    {0.022667, 0.0}, {0.034, 0.0},    {0.0375, 0.0},
+                          {0.0375, 0.004},    {0.034, 0.004},     {0.012, 0.006},  {0.004, 0.012},  {0.0035, 0.03},
+                          {0.0035, 0.048333}, {0.0035, 0.066667}, {0.0035, 0.085}, {0.0035, 0.1},   {0.012, 0.102},
+                          {0.03, 0.112},      {0.05, 0.124},      {0.05, 0.165},   {0.038, 0.2},    {0.0376, 0.2012},
+                          {0.0362, 0.2012},   {0.0358, 0.2},      {0.0472, 0.166}, {0.0472, 0.126}, {0.0285, 0.1145},
+                          {0.014, 0.106},     {0.006, 0.1045},    {0.0, 0.104}});
   for (const double tolerance : {0.0046079899299041995, 0.01, 0.02, 0.05, 1e-3, 3e-4}) {
     SCOPED_TRACE("wine glass, tolerance " + std::to_string(tolerance));
     expectValidWithin(wineGlass, tolerance);
   }
   // A wall 1e-3 thick, bent: chords of tolerance 0.05 would cut through it and cross each other.
-  const Spline thin(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0.6, 0}, {0.6, 1}, {0.3, 1}, {0.6 - 1e-3, 1 - 1e-3}, {0.6 - 1e-3, 1e-3}, {0, 1e-3}});
+  const Spline thin(
+      SplineKind::bezier,
+      std::vector<Point2>{{0, 0}, {0.6, 0}, {0.6, 1}, {0.3, 1}, {0.6 - 1e-3, 1 - 1e-3}, {0.6 - 1e-3, 1e-3}, {0, 1e-3}});
   for (const double tolerance : {0.3, 0.05, 1e-3, 1e-5}) {
     SCOPED_TRACE("thin wall, tolerance " + std::to_string(tolerance));
     expectValidWithin(thin, tolerance);

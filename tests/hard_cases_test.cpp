@@ -2,9 +2,9 @@
 // search (MIBIT with each shell kind, linear, Kajiya). Each test prints "hard case: rays, wrong"
 // for README's table. Expected answers come from geometry or from the long-double oracle.
 #include "support/hard_profiles.h"
-#include "support/test_scale.h"
 #include "support/reference.h"
 #include "support/test_profiles.h"
+#include "support/test_scale.h"
 #include "support/test_seeds.h"
 
 #include <revolve/revolve.h>
@@ -35,7 +35,8 @@ const Variant kVariants[] = {
 };
 
 reference::RefRay toRef(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 double norm(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
@@ -96,7 +97,8 @@ TEST(HardCasesTest, RaysThroughAnApexHitIt) {
         ++fired;
         // The apex lies at t = 2; the first hit is there or before (float rounding of t allowed).
         if (!hit || hit->t > 2.0f * (1 + 4 * float(kFloatRoundoff))) {
-          if (++wrong <= 3) ADD_FAILURE() << "d=(" << d.x << ", " << d.y << ", " << d.z << "): " << (hit ? hit->t : -1.0f);
+          if (++wrong <= 3)
+            ADD_FAILURE() << "d=(" << d.x << ", " << d.y << ", " << d.z << "): " << (hit ? hit->t : -1.0f);
         }
       }
     }
@@ -162,7 +164,8 @@ TEST(HardCasesTest, NearlyHorizontalRaysGrazingAnApexStayOnTheSurface) {
       ++fired;
       const std::optional<Hit> hit = intersect(shape, ray);
       if (!hit) continue;
-      const double x = ray.origin.x + double(hit->t) * ray.direction.x, y = ray.origin.y + double(hit->t) * ray.direction.y,
+      const double x = ray.origin.x + double(hit->t) * ray.direction.x,
+                   y = ray.origin.y + double(hit->t) * ray.direction.y,
                    z = ray.origin.z + double(hit->t) * ray.direction.z;
       const double residual = double(reference::meridianDistance(points, x, y, z));
       if (residual > 8 * kFloatRoundoff * 3.0 && ++wrong <= 3) {
@@ -185,7 +188,8 @@ struct Disagreements {
   std::size_t wrong = 0, excusedNearApex = 0, excusedElsewhere = 0;
 };
 
-Disagreements disagreements(std::span<const Point2> points, const Shape& shape, const std::vector<Ray>& rays, double size) {
+Disagreements disagreements(std::span<const Point2> points, const Shape& shape, const std::vector<Ray>& rays,
+                            double size) {
   Disagreements found;
   for (const Ray& ray : rays) {
     const std::optional<Hit> got = intersect(shape, ray);
@@ -197,8 +201,8 @@ Disagreements disagreements(std::span<const Point2> points, const Shape& shape, 
     }
     if (!reference::verdictIsFragile(points, toRef(ray), 1e-9L * size, size)) {
       if (++found.wrong <= 3) {
-        ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
-                      << ", " << ray.direction.y << ", " << ray.direction.z << "): oracle "
+        ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+                      << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << "): oracle "
                       << (expected ? std::to_string(double(expected->t)) : "miss") << ", library "
                       << (got ? std::to_string(got->t) : "miss");
       }
@@ -213,9 +217,9 @@ Disagreements disagreements(std::span<const Point2> points, const Shape& shape, 
 
 TEST(HardCasesTest, AxisAlignedRaysAgreeWithTheOracle) {
   const std::vector<std::pair<const char*, std::vector<Point2>>> profiles = {
-      {"stairs", testing::stairs(10)}, {"cup", testing::cup()}, {"hourglass", testing::hourglass()},
-      {"capped cylinder", testing::cappedCylinder(0.5, -0.75, 0.75)}, {"sphere", testing::sphereLike(1.0, 64)},
-      {"hollow vase", testing::hollowVase()}};
+      {"stairs", testing::stairs(10)},          {"cup", testing::cup()},
+      {"hourglass", testing::hourglass()},      {"capped cylinder", testing::cappedCylinder(0.5, -0.75, 0.75)},
+      {"sphere", testing::sphereLike(1.0, 64)}, {"hollow vase", testing::hollowVase()}};
   for (const std::uint64_t seed : testing::testSeeds({13})) {
     SCOPED_TRACE(testing::seedTrace(seed));
     std::mt19937_64 random(seed);
@@ -274,7 +278,8 @@ TEST(HardCasesTest, TangentRaysGiveNoNaNAndNoHitOffTheSurface) {
         // Tangent directions: the azimuthal one and the one along the meridian, mixed.
         const double w = 2 * unit(random) - 1;
         const double tr = w * -nz, tz = w * nr, tphi = std::sqrt(std::max(0.0, 1 - w * w));
-        const Vec3 d{float(tr * std::cos(phi) - tphi * std::sin(phi)), float(tr * std::sin(phi) + tphi * std::cos(phi)), float(tz)};
+        const Vec3 d{float(tr * std::cos(phi) - tphi * std::sin(phi)), float(tr * std::sin(phi) + tphi * std::cos(phi)),
+                     float(tz)};
         const Vec3 p{float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)};
         const Ray ray{{p.x - d.x * float(size), p.y - d.y * float(size), p.z - d.z * float(size)}, d};
         ++fired;
@@ -285,7 +290,8 @@ TEST(HardCasesTest, TangentRaysGiveNoNaNAndNoHitOffTheSurface) {
         // The reported point, rounded from the double solution, lies within float rounding of the
         // surface: a few ulps of its own magnitude (tangent roots keep half of double's digits,
         // still below a float ulp).
-        const double residual = double(reference::meridianDistance(closed.points, hit->point.x, hit->point.y, hit->point.z));
+        const double residual =
+            double(reference::meridianDistance(closed.points, hit->point.x, hit->point.y, hit->point.z));
         if (!finite || residual > 4 * kFloatRoundoff * (norm(hit->point) + size)) {
           if (++wrong <= 3) ADD_FAILURE() << closed.name << ": residual " << residual << (finite ? "" : " (NaN)");
         }
@@ -316,7 +322,8 @@ TEST(HardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
   struct Setting {
     double scale, lift, distance;
   };
-  const Setting settings[] = {{1, 0, 1e4}, {1e-3, 0, 1e4}, {1e3, 0, 1e4}, {1e-3, 1.0, 10}, {1e3, 1e6, 10}, {1, 1e3, 1e2}};
+  const Setting settings[] = {{1, 0, 1e4},     {1e-3, 0, 1e4}, {1e3, 0, 1e4},
+                              {1e-3, 1.0, 10}, {1e3, 1e6, 10}, {1, 1e3, 1e2}};
   const std::vector<Point2> base = testing::hollowVase();
   for (const Variant& variant : kVariants) {
     std::size_t fired = 0, wrong = 0;
@@ -330,7 +337,8 @@ TEST(HardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
       const double cz = 0.5 * (double(box.lower.z) + box.upper.z);
       std::uniform_real_distribution<double> inBox(0.0, 1.0);
       for (int i = 0; i < 4000; ++i) {
-        const double gx = gauss(random), gy = gauss(random), gz = gauss(random), g = std::sqrt(gx * gx + gy * gy + gz * gz);
+        const double gx = gauss(random), gy = gauss(random), gz = gauss(random),
+                     g = std::sqrt(gx * gx + gy * gy + gz * gz);
         const double reach = setting.distance * size;
         const Vec3 origin{float(reach * gx / g), float(reach * gy / g), float(cz + reach * gz / g)};
         const Vec3 target{float(box.lower.x + inBox(random) * (box.upper.x - box.lower.x)),
@@ -346,8 +354,10 @@ TEST(HardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
         if (ok && got) {
           // t is a float: half an ulp of t d, plus the input resolution over the incidence.
           const double cosine = std::abs(double(expected->nx * ray.direction.x + expected->ny * ray.direction.y +
-                                                expected->nz * ray.direction.z)) / dn;
-          ok = std::abs(got->t - double(expected->t)) * dn <= 2 * kFloatRoundoff * got->t * dn + 4 * resolution / std::max(cosine, 1e-3);
+                                                expected->nz * ray.direction.z)) /
+                                dn;
+          ok = std::abs(got->t - double(expected->t)) * dn <=
+               2 * kFloatRoundoff * got->t * dn + 4 * resolution / std::max(cosine, 1e-3);
           const double residual = double(reference::meridianDistance(points, got->point.x, got->point.y, got->point.z));
           ok = ok && residual <= 4 * kFloatRoundoff * (norm(got->point) + size);
         }
@@ -362,7 +372,8 @@ TEST(HardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
             }
           }
           if (!fragile && ++wrong <= 3) {
-            ADD_FAILURE() << "oracle " << (expected ? double(expected->t) : -1.0) << ", library " << (got ? got->t : -1.0f);
+            ADD_FAILURE() << "oracle " << (expected ? double(expected->t) : -1.0) << ", library "
+                          << (got ? got->t : -1.0f);
           }
         }
       }
@@ -389,23 +400,28 @@ TEST(HardCasesTest, EveryHitLiesOnTheSurfaceWithAUnitConsistentNormal) {
       const Shape shape(Profile(closed.points), variant.options);
       const double size = norm(shape.bounds().upper);
       // The oracle's meridian distance is O(points) a call: fewer rays on the 20,001-point profile.
-      for (const Ray& ray : testing::incoherentRays(shape, random, testing::scaledRays(closed.points.size() > 1000 ? 300 : 4000))) {
+      for (const Ray& ray :
+           testing::incoherentRays(shape, random, testing::scaledRays(closed.points.size() > 1000 ? 300 : 4000))) {
         const std::optional<Hit> hit = intersect(shape, ray);
         if (!hit) continue;
         ++fired;
-        const double pointResidual = double(reference::meridianDistance(closed.points, hit->point.x, hit->point.y, hit->point.z));
-        const double x = ray.origin.x + double(hit->t) * ray.direction.x, y = ray.origin.y + double(hit->t) * ray.direction.y,
+        const double pointResidual =
+            double(reference::meridianDistance(closed.points, hit->point.x, hit->point.y, hit->point.z));
+        const double x = ray.origin.x + double(hit->t) * ray.direction.x,
+                     y = ray.origin.y + double(hit->t) * ray.direction.y,
                      z = ray.origin.z + double(hit->t) * ray.direction.z;
         const double rayResidual = double(reference::meridianDistance(closed.points, x, y, z));
         const double unit = norm(hit->normal);
         // Reverse ray through the hit point: same point, approached from the other side.
-        const Vec3 through{2 * hit->point.x - ray.origin.x, 2 * hit->point.y - ray.origin.y, 2 * hit->point.z - ray.origin.z};
+        const Vec3 through{2 * hit->point.x - ray.origin.x, 2 * hit->point.y - ray.origin.y,
+                           2 * hit->point.z - ray.origin.z};
         const Ray back{through, {-ray.direction.x, -ray.direction.y, -ray.direction.z}};
         const std::optional<Hit> other = intersect(shape, back);
         // Where the reverse ray meets the same point of the same segment, the normal is the same.
         bool sameNormal = true;
         if (other && other->segment == hit->segment &&
-            norm({other->point.x - hit->point.x, other->point.y - hit->point.y, other->point.z - hit->point.z}) < 1e-5 * size) {
+            norm({other->point.x - hit->point.x, other->point.y - hit->point.y, other->point.z - hit->point.z}) <
+                1e-5 * size) {
           sameNormal = norm({other->normal.x - hit->normal.x, other->normal.y - hit->normal.y,
                              other->normal.z - hit->normal.z}) < 1e-5;
         }
@@ -464,8 +480,8 @@ TEST(HardCasesTest, HitsWithinSubnormalDistancesOfTheAxisHaveUnitNormals) {
                         std::abs(hit->normal.z - nz) <= kFloatRoundoff;
         if (!ok && ++wrong <= 3) {
           ADD_FAILURE() << c.name << ", " << variant.name << ": d = (" << ray.direction.x << ", " << ray.direction.y
-                        << ", " << ray.direction.z << "): t " << hit->t << ", residual " << residual << ", n (" << hit->normal.x << ", "
-                        << hit->normal.y << ", " << hit->normal.z << ")";
+                        << ", " << ray.direction.z << "): t " << hit->t << ", residual " << residual << ", n ("
+                        << hit->normal.x << ", " << hit->normal.y << ", " << hit->normal.z << ")";
         }
       }
       const std::string hardCase = std::string("hits within subnormal distances of the axis: ") + c.name;

@@ -38,7 +38,9 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
         const std::optional<Hit> a = baseline->intersect(detail::implOf(shape), ray, &statsA);
         const std::optional<Hit> b = avx2->intersect(detail::implOf(shape), ray, &statsB);
         ASSERT_EQ(a.has_value(), b.has_value()) << named.name;
-        ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr), avx2->occluded(detail::implOf(shape), ray, nullptr)) << named.name;
+        ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr),
+                  avx2->occluded(detail::implOf(shape), ray, nullptr))
+            << named.name;
         EXPECT_EQ(statsA.quadratics, statsB.quadratics) << named.name;
         if (!a) continue;
         ++hits;
@@ -65,7 +67,9 @@ TEST(IsaTest, SplineShapesGiveTheSameHitsBitForBit) {
       const std::optional<Hit> a = baseline->intersect(detail::implOf(shape), ray, nullptr);
       const std::optional<Hit> b = avx2->intersect(detail::implOf(shape), ray, nullptr);
       ASSERT_EQ(a.has_value(), b.has_value()) << named.name;
-      ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr), avx2->occluded(detail::implOf(shape), ray, nullptr)) << named.name;
+      ASSERT_EQ(baseline->occluded(detail::implOf(shape), ray, nullptr),
+                avx2->occluded(detail::implOf(shape), ray, nullptr))
+          << named.name;
       if (!a) continue;
       ++hits;
       ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;

@@ -36,12 +36,14 @@ TEST(KernelPacketTest, PacketSetUpEqualsTheSingleRaySetUpBitForBit) {
     float fields[8][detail::kLanes];
     for (int lane = 0; lane < detail::kLanes; ++lane) {
       const Ray& r = rays[first + lane];
-      const float values[8] = {r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z, r.tnear, r.tfar};
+      const float values[8] = {r.origin.x,    r.origin.y,    r.origin.z, r.direction.x,
+                               r.direction.y, r.direction.z, r.tnear,    r.tfar};
       for (int f = 0; f < 8; ++f) fields[f][lane] = values[f];
     }
     detail::MeridianRay packet[detail::kLanes];
     const unsigned ok = detail::setUpMeridianRays(
-        detail::implOf(shape).frame, {fields[0], fields[1], fields[2], fields[3], fields[4], fields[5], fields[6], fields[7]}, packet);
+        detail::implOf(shape).frame,
+        {fields[0], fields[1], fields[2], fields[3], fields[4], fields[5], fields[6], fields[7]}, packet);
     for (int lane = 0; lane < detail::kLanes; ++lane) {
       detail::MeridianRay single;
       const bool singleOk = detail::setUpMeridianRay(detail::implOf(shape).frame, rays[first + lane], single);
@@ -49,12 +51,15 @@ TEST(KernelPacketTest, PacketSetUpEqualsTheSingleRaySetUpBitForBit) {
       if (!singleOk) continue;
       ++accepted;
       const detail::MeridianRay& p = packet[lane];
-      const double a[] = {single.ox, single.oy, single.oz, single.dx, single.dy, single.dz, single.t0, single.tScale,
-                          single.lo, single.hi, single.a, single.cross, single.sAxis, single.invDz, single.invA,
+      const double a[] = {single.ox,   single.oy,        single.oz,         single.dx,         single.dy,
+                          single.dz,   single.t0,        single.tScale,     single.lo,         single.hi,
+                          single.a,    single.cross,     single.sAxis,      single.invDz,      single.invA,
                           single.beta, single.rho2Slack, single.rho2Margin, single.bandMargin, single.lineSlack};
-      const double b[] = {p.ox, p.oy, p.oz, p.dx, p.dy, p.dz, p.t0, p.tScale, p.lo, p.hi, p.a, p.cross, p.sAxis,
-                          p.invDz, p.invA, p.beta, p.rho2Slack, p.rho2Margin, p.bandMargin, p.lineSlack};
-      for (std::size_t f = 0; f < std::size(a); ++f) ASSERT_TRUE(sameBits(a[f], b[f])) << "ray " << first + lane << " field " << f;
+      const double b[] = {p.ox,     p.oy,   p.oz,        p.dx,         p.dy,         p.dz,       p.t0,
+                          p.tScale, p.lo,   p.hi,        p.a,          p.cross,      p.sAxis,    p.invDz,
+                          p.invA,   p.beta, p.rho2Slack, p.rho2Margin, p.bandMargin, p.lineSlack};
+      for (std::size_t f = 0; f < std::size(a); ++f)
+        ASSERT_TRUE(sameBits(a[f], b[f])) << "ray " << first + lane << " field " << f;
       ASSERT_EQ(single.inPlane, p.inPlane);
     }
   }

@@ -3,8 +3,8 @@
 // any difference is a node pruned that held the nearest hit. Bit-exact agreement is expected
 // because each segment's hits are computed over the same range by every method (shape_search.h).
 #include "support/hard_profiles.h"
-#include "support/test_scale.h"
 #include "support/test_profiles.h"
+#include "support/test_scale.h"
 
 #include <revolve/revolve.h>
 
@@ -42,8 +42,8 @@ std::vector<Variant> variants() {
 std::string describe(const Ray& ray) {
   std::ostringstream out;
   out.precision(9);
-  out << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
-      << ", " << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tnear << ", " << ray.tfar << "]";
+  out << "ray o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x << ", "
+      << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tnear << ", " << ray.tfar << "]";
   return out.str();
 }
 

@@ -11,8 +11,8 @@
 //   implicit node's run lies in the box of its two end vertices (its CY shell and slab);
 // - the depth is the longest root-to-leaf path, within the bound the pairwise grouping promises:
 //   ceil(log2 intervals) + 1 + ceil(log2 leaves a interval), far below the searches' 64-entry stacks.
-#include "curve/monotone_parts.h"
 #include "mibit/mibit_tree.h"
+#include "curve/monotone_parts.h"
 #include "support/hard_profiles.h"
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"

@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/mman.h>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <sys/mman.h>
 #include <vector>
 
 namespace revolve {
@@ -95,7 +95,8 @@ TEST(ProfileTest, RepeatedConsecutivePointsAreDroppedWithAWarning) {
   EXPECT_EQ(profile.points().size(), 4u);
   ASSERT_EQ(profile.warnings().size(), 3u);
   EXPECT_EQ(profile.warnings()[0].index, 2u);
-  EXPECT_TRUE(contains(profile.warnings()[0].message, "profile point 2 (r = 1, z = 0) repeats point 1")) << profile.warnings()[0].message;
+  EXPECT_TRUE(contains(profile.warnings()[0].message, "profile point 2 (r = 1, z = 0) repeats point 1"))
+      << profile.warnings()[0].message;
   EXPECT_EQ(profile.sourceIndex()[2], 3u);
 }
 

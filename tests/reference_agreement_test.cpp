@@ -17,7 +17,8 @@ namespace revolve {
 namespace {
 
 reference::RefRay toRef(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 double norm(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
@@ -42,9 +43,9 @@ TEST(ReferenceAgreementTest, MatchesTheLongDoubleOracleOnEveryStandardProfile) {
         const std::optional<Hit> got = intersect(shape, ray);
         const std::optional<reference::RefHit> expected = reference::intersectProfile(named.points, toRef(ray));
         const bool sameVerdict = got.has_value() == expected.has_value();
-        const bool sameDistance =
-            !got || !expected ||
-            std::abs(got->t - double(expected->t)) * norm(ray.direction) <= 0x1p-22 * (std::abs(got->t) * norm(ray.direction) + size);
+        const bool sameDistance = !got || !expected ||
+                                  std::abs(got->t - double(expected->t)) * norm(ray.direction) <=
+                                      0x1p-22 * (std::abs(got->t) * norm(ray.direction) + size);
         if (sameVerdict && sameDistance) {
           ++compared;
           if (got && got->segment == expected->segment) {
@@ -66,10 +67,11 @@ TEST(ReferenceAgreementTest, MatchesTheLongDoubleOracleOnEveryStandardProfile) {
           continue;
         }
         if (++reported <= 5) {
-          ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
-                        << ", " << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tnear << ", " << ray.tfar
-                        << "]: oracle " << (expected ? "t=" + std::to_string(double(expected->t)) : std::string("miss"))
-                        << ", library " << (got ? "t=" + std::to_string(got->t) : std::string("miss"));
+          ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+                        << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << ") [" << ray.tnear
+                        << ", " << ray.tfar << "]: oracle "
+                        << (expected ? "t=" + std::to_string(double(expected->t)) : std::string("miss")) << ", library "
+                        << (got ? "t=" + std::to_string(got->t) : std::string("miss"));
         }
       }
       // The excuses, bounded. Elsewhere than at an apex (within 1e-9 of a silhouette or a rim,
@@ -84,7 +86,8 @@ TEST(ReferenceAgreementTest, MatchesTheLongDoubleOracleOnEveryStandardProfile) {
       // vertex heights an apex's), over 40 seeds.
       EXPECT_LE(elsewhere, 1u);
       EXPECT_LE(nearApex, 4u);
-      std::printf("%s: %zu disagreements excused near an apex, %zu elsewhere\n", named.name.c_str(), nearApex, elsewhere);
+      std::printf("%s: %zu disagreements excused near an apex, %zu elsewhere\n", named.name.c_str(), nearApex,
+                  elsewhere);
     }
     EXPECT_GE(compared, 119000u);
   }

@@ -548,7 +548,8 @@ TEST(ReferenceTest, HorizontalRaysFollowTheHalfOpenHeightRule) {
 
   // A vertex where the profile turns from down to up belongs to both segments; one where it turns
   // from up to down, to neither.
-  const std::vector<RefHit> valley = allHits(std::vector<Point2>{{2, 1}, {1, 0}, {2, 2}}, makeRay({-3, 0, 0}, {1, 0, 0}));
+  const std::vector<RefHit> valley =
+      allHits(std::vector<Point2>{{2, 1}, {1, 0}, {2, 2}}, makeRay({-3, 0, 0}, {1, 0, 0}));
   ASSERT_EQ(valley.size(), 4u);
   EXPECT_EQ(valley[0].t, 2);
   EXPECT_EQ(valley[1].t, 2);

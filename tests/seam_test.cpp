@@ -4,8 +4,8 @@
 // The kernel guarantees it by construction (segment_hits.h: the inside/outside state at a vertex
 // plane is one predicate both neighbours evaluate identically), not by tolerance.
 #include "support/hard_profiles.h"
-#include "support/test_scale.h"
 #include "support/test_profiles.h"
+#include "support/test_scale.h"
 
 #include <revolve/revolve.h>
 
@@ -54,7 +54,9 @@ TEST(SeamTest, RaysFromInsideAimedAtVertexCirclesNeverLeak) {
   const std::size_t defaultRays = testing::scaledRays(10'000'000) / profiles.size() + 1;
   const std::vector<Variant> variants = {
       {"mibit (the default: cylinder, wide)", {}, defaultRays},
-      {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}, testing::scaledRays(100'000)},
+      {"mibit/cylinder/binary",
+       {Method::mibit, ShellKind::cylinder, 0, true, true, false},
+       testing::scaledRays(100'000)},
       {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, testing::scaledRays(100'000)},
       {"mibit/cone", {Method::mibit, ShellKind::cone}, testing::scaledRays(100'000)},
       {"mibit/no split", {Method::mibit, ShellKind::hybrid, 0, false}, testing::scaledRays(50'000)},
@@ -67,7 +69,9 @@ TEST(SeamTest, RaysFromInsideAimedAtVertexCirclesNeverLeak) {
       SCOPED_TRACE(std::string(variant.name) + ", " + closed.name + ", seed " + std::to_string(kSeed));
       const Shape shape(Profile(closed.points), variant.options);
       // The linear scan over 20,000 segments costs a millisecond a ray: fewer rays there.
-      const std::size_t count = variant.options.method == Method::linear && closed.points.size() > 1000 ? testing::scaledRays(500) : variant.raysPerProfile;
+      const std::size_t count = variant.options.method == Method::linear && closed.points.size() > 1000
+                                    ? testing::scaledRays(500)
+                                    : variant.raysPerProfile;
       int reported = 0;
       for (const Ray& ray : raysAtVertexCircles(closed.points, random, count)) {
         ++fired;

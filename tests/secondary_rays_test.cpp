@@ -2,9 +2,9 @@
 // yet must find the same surface again where it really lies ahead (concave profiles). The verdict
 // on every near hit comes from the long-double oracle on the very same float ray.
 #include "support/hard_profiles.h"
-#include "support/test_scale.h"
 #include "support/reference.h"
 #include "support/test_profiles.h"
+#include "support/test_scale.h"
 
 #include <revolve/revolve.h>
 
@@ -19,7 +19,8 @@ namespace {
 double norm(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
 
 reference::RefRay toRef(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 Vec3 scaled(Vec3 v, double s) { return {float(v.x * s), float(v.y * s), float(v.z * s)}; }
@@ -42,8 +43,8 @@ void spawnAndCheck(const Shape& shape, std::span<const Point2> points, const Ray
     // says of the float ray, since a ray leaving a cone cannot meet it again this soon — or a
     // real corner with a neighbouring segment of a concave profile, which the oracle confirms.
     const auto truth = reference::intersectProfile(points, toRef(spawned));
-    const bool corner = next->segment != hit.segment && truth &&
-                        std::abs(double(truth->t) * norm(direction) - distance) <= 1e-6 * size;
+    const bool corner =
+        next->segment != hit.segment && truth && std::abs(double(truth->t) * norm(direction) - distance) <= 1e-6 * size;
     if (corner) {
       ++counts.legitimateNearHits;
     } else if (++counts.falseSelfHits <= 3) {
@@ -69,7 +70,9 @@ struct Variant {
 TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhere) {
   constexpr std::uint64_t kSeed = 0x5ecd;
   const Variant variants[] = {
-      {"mibit/cylinder", {Method::mibit, ShellKind::cylinder}, testing::scaledRays(60000)},  // the default (wide) carries the million
+      {"mibit/cylinder",
+       {Method::mibit, ShellKind::cylinder},
+       testing::scaledRays(60000)},  // the default (wide) carries the million
       {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}, testing::scaledRays(6000)},
       {"mibit/cone", {Method::mibit, ShellKind::cone}, testing::scaledRays(6000)},
       {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, testing::scaledRays(6000)},
@@ -97,7 +100,8 @@ TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhe
         const Vec3 reflected{float(d.x - 2 * dot * hit->normal.x), float(d.y - 2 * dot * hit->normal.y),
                              float(d.z - 2 * dot * hit->normal.z)};
         // Shadow ray: towards a light outside the object, on either side of the surface.
-        const double gx = gauss(random), gy = gauss(random), gz = gauss(random), g = std::sqrt(gx * gx + gy * gy + gz * gz);
+        const double gx = gauss(random), gy = gauss(random), gz = gauss(random),
+                     g = std::sqrt(gx * gx + gy * gy + gz * gz);
         const Vec3 light{float(3 * size * gx / g), float(3 * size * gy / g), float(3 * size * gz / g)};
         const Vec3 toLight{light.x - hit->point.x, light.y - hit->point.y, light.z - hit->point.z};
         // Transmission: straight on, through the surface.
@@ -113,9 +117,11 @@ TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhe
       total.reHitsChecked += counts.reHitsChecked;
       total.reHitsWrong += counts.reHitsWrong;
     }
-    std::printf("hard case | secondary rays: false self-hits | %s | %zu rays | %zu wrong (%zu corner hits; %zu re-hits checked, %zu wrong)\n",
-                variant.name, total.spawned, total.falseSelfHits, total.legitimateNearHits, total.reHitsChecked,
-                total.reHitsWrong);
+    std::printf(
+        "hard case | secondary rays: false self-hits | %s | %zu rays | %zu wrong (%zu corner hits; %zu re-hits "
+        "checked, %zu wrong)\n",
+        variant.name, total.spawned, total.falseSelfHits, total.legitimateNearHits, total.reHitsChecked,
+        total.reHitsWrong);
     EXPECT_EQ(total.falseSelfHits, 0u) << variant.name;
     // Legitimate re-hits of the same surface are found, where the oracle finds them.
     EXPECT_GT(concaveReHits, variant.primaries / 10) << variant.name;

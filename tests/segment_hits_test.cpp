@@ -25,8 +25,8 @@
 // tnear / tfar), holds other than one root (a tangency) or passes an apex within the touch's
 // tolerance (addApexTouch), the exact answer is within rounding of another and either is right:
 // the count there is not checked, only that every hit lies in some component.
-#include "kernel/meridian_ray.h"
 #include "kernel/segment_hits.h"
+#include "kernel/meridian_ray.h"
 #include "support/test_scale.h"
 #include "support/test_seeds.h"
 

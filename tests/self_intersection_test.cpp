@@ -141,9 +141,7 @@ TEST(OrientTest, BasicTurns) {
 TEST(OrientTest, ExactlyRepresentableLines) {
   for (const int exponent : {-1074, -1060, -600, -52, 0, 40, 600, 960}) {
     SCOPED_TRACE("scale 2^" + std::to_string(exponent));
-    const auto at = [&](double k) {
-      return Point2{std::ldexp(3 + 7 * k, exponent), std::ldexp(-5 + 2 * k, exponent)};
-    };
+    const auto at = [&](double k) { return Point2{std::ldexp(3 + 7 * k, exponent), std::ldexp(-5 + 2 * k, exponent)}; };
     for (int i = -4; i <= 4; ++i) {
       EXPECT_EQ(orient2d(at(-9), at(13), at(i)), 0);
       EXPECT_EQ(orient2d(at(i), at(-9), at(13)), 0);
@@ -170,9 +168,7 @@ TEST(OrientTest, NaiveDeterminantGetsNearDegenerateSignsWrong) {
   for (int i = 0; i < 64; ++i) {
     for (int j = 0; j < 64; ++j) {
       const Point2 a{0.5 + i * 0x1p-53, 0.5 + j * 0x1p-53};
-      const auto integer = [](Point2 p) {
-        return IntPoint{toInt(std::ldexp(p.r, 53)), toInt(std::ldexp(p.z, 53))};
-      };
+      const auto integer = [](Point2 p) { return IntPoint{toInt(std::ldexp(p.r, 53)), toInt(std::ldexp(p.z, 53))}; };
       const int exact = exactIntegerOrient(integer(a), integer(b), integer(c));
       ASSERT_EQ(orient2d(a, b, c), exact) << "i=" << i << " j=" << j;
       ASSERT_EQ(orient2d(b, c, a), exact) << "i=" << i << " j=" << j;
@@ -181,8 +177,7 @@ TEST(OrientTest, NaiveDeterminantGetsNearDegenerateSignsWrong) {
       const int naive = naiveOrient(a, b, c);
       naiveWrong += naive != exact;
       if (naive == -exact && exact != 0 && naiveOpposite++ == 0) {
-        std::printf("naive determinant says %d, exact answer %d, for a = (%a, %a)\n", naive, exact,
-                    a.r, a.z);
+        std::printf("naive determinant says %d, exact answer %d, for a = (%a, %a)\n", naive, exact, a.r, a.z);
       }
     }
   }
@@ -230,8 +225,7 @@ TEST(OrientTest, DenormalCoordinates) {
       point[k] = {std::ldexp(static_cast<double>(integer[k].r), -1074),
                   std::ldexp(static_cast<double>(integer[k].z), -1074)};
     }
-    ASSERT_EQ(orient2d(point[0], point[1], point[2]),
-              exactIntegerOrient(integer[0], integer[1], integer[2]))
+    ASSERT_EQ(orient2d(point[0], point[1], point[2]), exactIntegerOrient(integer[0], integer[1], integer[2]))
         << "trial " << trial;
   }
 }
@@ -290,8 +284,7 @@ TEST(OrientTest, CollinearAcrossTheWholeExponentRange) {
     // Shift c by one unit of the integer grid: off the line unless d is zero in that direction.
     const IntPoint cUp{c.r, c.z + 1};
     ASSERT_EQ(orient2d(toPoint(a), toPoint(b), toPoint(c)), 0) << "trial " << trial;
-    ASSERT_EQ(orient2d(toPoint(a), toPoint(b), toPoint(cUp)), exactIntegerOrient(a, b, cUp))
-        << "trial " << trial;
+    ASSERT_EQ(orient2d(toPoint(a), toPoint(b), toPoint(cUp)), exactIntegerOrient(a, b, cUp)) << "trial " << trial;
   }
 }
 
@@ -300,8 +293,8 @@ TEST(OrientTest, CollinearAcrossTheWholeExponentRange) {
 double interestingDouble(std::mt19937_64& random) {
   constexpr double kMax = std::numeric_limits<double>::max();
   constexpr double kDenormMin = std::numeric_limits<double>::denorm_min();
-  static constexpr std::array<double, 12> kPool = {
-      0.0, -0.0, 1.0, -1.0, 0.5, 3.0, kDenormMin, 0x1p-1022, 1e-300, 1e300, kMax, -kMax};
+  static constexpr std::array<double, 12> kPool = {0.0,        -0.0,      1.0,    -1.0,  0.5,  3.0,
+                                                   kDenormMin, 0x1p-1022, 1e-300, 1e300, kMax, -kMax};
   switch (random() % 3) {
     case 0:
       return kPool[random() % kPool.size()] * ((random() & 1) ? 1 : -1);
@@ -399,16 +392,13 @@ bool isPair(const std::optional<SegmentPair>& found, std::size_t first, std::siz
 // Whether `found` is one of the listed pairs (when several pairs are at fault).
 bool isOneOf(const std::optional<SegmentPair>& found,
              std::initializer_list<std::pair<std::size_t, std::size_t>> pairs) {
-  return found && std::any_of(pairs.begin(), pairs.end(), [&](auto pair) {
-           return found->first == pair.first && found->second == pair.second;
-         });
+  return found && std::any_of(pairs.begin(), pairs.end(),
+                              [&](auto pair) { return found->first == pair.first && found->second == pair.second; });
 }
 
 TEST(SelfIntersectionTest, SingleSegmentNeverIntersects) { EXPECT_FALSE(find({{0, 0}, {1, 1}})); }
 
-TEST(SelfIntersectionTest, SimpleOpenPathIsAccepted) {
-  EXPECT_FALSE(find({{1, 0}, {2, 1}, {2, 3}, {1, 4}, {0.5, 6}}));
-}
+TEST(SelfIntersectionTest, SimpleOpenPathIsAccepted) { EXPECT_FALSE(find({{1, 0}, {2, 1}, {2, 3}, {1, 4}, {0.5, 6}})); }
 
 // Neighbours share their common vertex, even at sharp turns where both leave it to the same side.
 TEST(SelfIntersectionTest, NeighboursMayShareTheirVertex) {
@@ -471,8 +461,7 @@ TEST(SelfIntersectionTest, RepeatedVertexIsAnIntersection) {
   // the offenders are ever in the sweep status at the same time.
   EXPECT_TRUE(isOneOf(find({{1, 1}, {0, 0}, {2, 0}, {1, 1}, {2, 2}}), {{0, 2}, {0, 3}}));
   // Bow tie: (1, 1) visited twice, four segments meet there.
-  EXPECT_TRUE(isOneOf(find({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}),
-                      {{0, 3}, {0, 4}, {1, 3}, {1, 4}}));
+  EXPECT_TRUE(isOneOf(find({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}), {{0, 3}, {0, 4}, {1, 3}, {1, 4}}));
   // Two collinear segments meeting end to end without being neighbours.
   EXPECT_TRUE(isOneOf(find({{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 0}, {1, 0}}), {{0, 4}, {1, 4}}));
   // An open path ending at a vertex it passed before: segments 0, 1 and 3 meet at (2, 0).
@@ -491,8 +480,8 @@ TEST(SelfIntersectionTest, ClosedLoopMayShareItsClosingPoint) {
 TEST(SelfIntersectionTest, ClosingPointIsReservedForFirstAndLastSegments) {
   // Figure-eight through the closing point (0, 0), which is also visited in the middle.
   // Segments 0 and 5 may meet there (closing), 2 and 3 too (vertex 3), no other combination.
-  EXPECT_TRUE(isOneOf(find({{0, 0}, {1, 1}, {1, -1}, {0, 0}, {-1, 1}, {-1, -1}, {0, 0}}),
-                      {{0, 2}, {0, 3}, {2, 5}, {3, 5}}));
+  EXPECT_TRUE(
+      isOneOf(find({{0, 0}, {1, 1}, {1, -1}, {0, 0}, {-1, 1}, {-1, -1}, {0, 0}}), {{0, 2}, {0, 3}, {2, 5}, {3, 5}}));
   // Two points, there and back: the only two segments coincide.
   EXPECT_TRUE(isPair(find({{0, 0}, {1, 0}, {0, 0}}), 0, 1));
   // Degenerate triangle: the closing segment (2,0)-(0,0) runs over both others.
@@ -534,13 +523,9 @@ struct RationalPoint {
   Int denominator;
 };
 
-bool equals(RationalPoint p, IntPoint q) {
-  return p.r == q.r * p.denominator && p.z == q.z * p.denominator;
-}
+bool equals(RationalPoint p, IntPoint q) { return p.r == q.r * p.denominator && p.z == q.z * p.denominator; }
 
-Int cross(IntPoint o, IntPoint a, IntPoint b) {
-  return (a.r - o.r) * (b.z - o.z) - (a.z - o.z) * (b.r - o.r);
-}
+Int cross(IntPoint o, IntPoint a, IntPoint b) { return (a.r - o.r) * (b.z - o.z) - (a.z - o.z) * (b.r - o.r); }
 
 // How two closed segments meet: not at all, in exactly one point, or along a stretch.
 struct Meeting {
@@ -565,17 +550,14 @@ Meeting meet(IntPoint a, IntPoint b, IntPoint c, IntPoint d) {
       return {};
     }
     return {Meeting::kPoint,
-            {a.r * denominator + tNumerator * ab.r, a.z * denominator + tNumerator * ab.z,
-             denominator}};
+            {a.r * denominator + tNumerator * ab.r, a.z * denominator + tNumerator * ab.z, denominator}};
   }
   if (cross(a, b, c) != 0) return {};  // parallel lines
   // Collinear: intersect the projections onto an axis along which the line is not constant.
   const bool useR = ab.r != 0;
   const auto coordinate = [&](IntPoint p) { return useR ? p.r : p.z; };
-  const Int low =
-      std::max(std::min(coordinate(a), coordinate(b)), std::min(coordinate(c), coordinate(d)));
-  const Int high =
-      std::min(std::max(coordinate(a), coordinate(b)), std::max(coordinate(c), coordinate(d)));
+  const Int low = std::max(std::min(coordinate(a), coordinate(b)), std::min(coordinate(c), coordinate(d)));
+  const Int high = std::min(std::max(coordinate(a), coordinate(b)), std::max(coordinate(c), coordinate(d)));
   if (low > high) return {};
   if (low < high) return {Meeting::kStretch, {}};
   for (const IntPoint p : {a, b, c, d}) {
@@ -625,8 +607,7 @@ std::vector<IntPoint> randomPolyline(std::mt19937_64& random) {
     if (next.r == points.back().r && next.z == points.back().z) continue;
     points.push_back(next);
   }
-  const bool differentEnds =
-      points.front().r != points.back().r || points.front().z != points.back().z;
+  const bool differentEnds = points.front().r != points.back().r || points.front().z != points.back().z;
   if (points.size() >= 3 && differentEnds && random() % 3 == 0) points.push_back(points.front());
   return points;
 }
@@ -645,8 +626,7 @@ TEST(SelfIntersectionTest, MatchesBruteForceOnRandomGridPolylines) {
     const int zExponent = kExponents[random() % kExponents.size()];
     std::vector<Point2> points;
     for (const IntPoint p : integer) {
-      points.push_back(
-          scaled({static_cast<double>(p.r), static_cast<double>(p.z)}, rExponent, zExponent));
+      points.push_back(scaled({static_cast<double>(p.r), static_cast<double>(p.z)}, rExponent, zExponent));
     }
     const bool expected = bruteHasIntersection(integer);
     const std::optional<SegmentPair> found = findSelfIntersection(points);
@@ -659,13 +639,12 @@ TEST(SelfIntersectionTest, MatchesBruteForceOnRandomGridPolylines) {
       ++intersecting;
     } else {
       ++clean;
-      const bool closed =
-          integer.front().r == integer.back().r && integer.front().z == integer.back().z;
+      const bool closed = integer.front().r == integer.back().r && integer.front().z == integer.back().z;
       closedClean += closed;
     }
   }
-  std::printf("seed %llu: %d intersecting, %d clean (%d closed)\n",
-              static_cast<unsigned long long>(seed), intersecting, clean, closedClean);
+  std::printf("seed %llu: %d intersecting, %d clean (%d closed)\n", static_cast<unsigned long long>(seed), intersecting,
+              clean, closedClean);
   EXPECT_GT(intersecting, 5000);
   EXPECT_GT(clean, 5000);
   EXPECT_GT(closedClean, 500);

@@ -10,8 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -198,7 +198,8 @@ TEST(ShadingNormalsTest, AConeTipStaysSharp) {
 TEST(ShadingNormalsTest, ZeroCreaseAngleGivesTheGeometricNormal) {
   // Flat shading: every vertex is a crease, so the shading normal is the segment's own normal, the
   // one intersect reports, on any profile (this one zigzags and has horizontal runs).
-  const Profile profile(std::vector<Point2>{{0, 0}, {1, 0}, {1.5, 0.5}, {0.7, 1}, {1.2, 1.5}, {1.2, 2}, {0.4, 2}, {0.4, 2.6}, {0, 2.6}});
+  const Profile profile(
+      std::vector<Point2>{{0, 0}, {1, 0}, {1.5, 0.5}, {0.7, 1}, {1.2, 1.5}, {1.2, 2}, {0.4, 2}, {0.4, 2.6}, {0, 2.6}});
   const Shape shape(profile);
   const ShadingNormals normals(profile, 0.0);
   std::mt19937_64 random(7);
@@ -261,16 +262,19 @@ TEST(ShadingNormalsTest, APolylineMadeFromACurveShadesWithTheCurvesNormal) {
         return ((q.r - a.r) * er + (q.z - a.z) * ez) / (er * er + ez * ez);
       };
       double lo = T[i], hi = T[i + 1];
-      for (int k = 0; k < 60; ++k) (projection(0.5 * (lo + hi)) < std::clamp(target, 0.0, 1.0) ? lo : hi) = 0.5 * (lo + hi);
+      for (int k = 0; k < 60; ++k)
+        (projection(0.5 * (lo + hi)) < std::clamp(target, 0.0, 1.0) ? lo : hi) = 0.5 * (lo + hi);
       const double t = 0.5 * (lo + hi), h = 1e-7 * (T[i + 1] - T[i]);
       const Point2 before = at(std::max(t - h, T[i])), after = at(std::min(t + h, T[i + 1]));
-      const double tr = after.r - before.r, tz = after.z - before.z, phi = std::atan2(double(hit->point.y), double(hit->point.x));
+      const double tr = after.r - before.r, tz = after.z - before.z,
+                   phi = std::atan2(double(hit->point.y), double(hit->point.x));
       const double nr = tz / std::hypot(tr, tz), nz = -tr / std::hypot(tr, tz);
       const Vec3d truth{nr * std::cos(phi), nr * std::sin(phi), nz};
       const Vec3 n = fromCurve.normal(hit->segment, hit->u, hit->v);
       EXPECT_NEAR(length(n), 1.0, 1e-6);
       worst = std::max(worst, angleBetween(n, truth));
-      worstInterpolated = std::max(worstInterpolated, angleBetween(interpolated.normal(hit->segment, hit->u, hit->v), truth));
+      worstInterpolated =
+          std::max(worstInterpolated, angleBetween(interpolated.normal(hit->segment, hit->u, hit->v), truth));
     }
     EXPECT_GT(hits, 300) << named.name;
     // The library places the point by the float v (2^-25 of the profile's length), the reference by
@@ -279,17 +283,20 @@ TEST(ShadingNormalsTest, APolylineMadeFromACurveShadesWithTheCurvesNormal) {
     // by the curvature times that; plus the float normal's rounding (2^-23).
     const double bound = 4 * 0x1p-24 * (polyline.arcLength().back() + extent) * curvature + 0x1p-23;
     EXPECT_LT(worst, bound) << named.name;
-    std::printf("%s: %zu points, largest curvature %.3g: worst %.3g rad from the curve (bound %.3g), %.3g interpolated\n",
-                named.name.c_str(), p.size(), curvature, worst, bound, worstInterpolated);
+    std::printf(
+        "%s: %zu points, largest curvature %.3g: worst %.3g rad from the curve (bound %.3g), %.3g interpolated\n",
+        named.name.c_str(), p.size(), curvature, worst, bound, worstInterpolated);
     worstOfAll = std::max(worstOfAll, worstInterpolated);
   }
   // Normals interpolated between the chords are off by far more (creases at chords turning by more
   // than 30 degrees, circle fits elsewhere): the test sees the difference.
   EXPECT_GT(worstOfAll, 0.1);
   // Normals of one curve for a polyline of another are refused.
-  const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4)), larger(SplineKind::bezier, testing::bezierSphere(0.6, 4));
+  const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4)),
+      larger(SplineKind::bezier, testing::bezierSphere(0.6, 4));
   EXPECT_THROW(ShadingNormals(Profile::fromCurve(sphere, 1e-3), larger), std::invalid_argument);
-  EXPECT_THROW(ShadingNormals(Profile(std::vector<Point2>{{0, -0.5}, {0.5, 0}, {0, 0.5}}), sphere), std::invalid_argument);
+  EXPECT_THROW(ShadingNormals(Profile(std::vector<Point2>{{0, -0.5}, {0.5, 0}, {0, 0.5}}), sphere),
+               std::invalid_argument);
 }
 
 TEST(ShadingNormalsTest, RejectsCreaseAnglesOutsideZeroTo180) {

@@ -35,8 +35,8 @@ void expectError(SplineKind kind, std::vector<Point2> points, Rule rule, std::si
 }
 
 TEST(SplineTest, KindNamesReadBack) {
-  for (const SplineKind kind : {SplineKind::linear, SplineKind::quadratic, SplineKind::bezier, SplineKind::catmullRom,
-                                SplineKind::natural}) {
+  for (const SplineKind kind :
+       {SplineKind::linear, SplineKind::quadratic, SplineKind::bezier, SplineKind::catmullRom, SplineKind::natural}) {
     EXPECT_EQ(splineKindNamed(splineKindName(kind)), kind);
   }
   EXPECT_EQ(std::string(splineKindName(SplineKind::catmullRom)), "catmull-rom");
@@ -82,12 +82,13 @@ TEST(SplineTest, CurvesCrossingTheAxisAreRefused) {
 TEST(SplineTest, CurvesTouchingTheAxisBetweenTheirPointsAreRefused) {
   // The middle piece (1, 0), (-1, 0.5), (1, 1) has r = (1 - u)^2 - 2 u (1 - u) + u^2 = (1 - 2u)^2:
   // it touches the axis at u = 1/2, between the points the curve passes through.
-  expectError(SplineKind::quadratic, {{0, 0}, {0.5, 0}, {1, 0}, {-1, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}, Rule::crossesAxis, 2,
-              "touches the axis");
+  expectError(SplineKind::quadratic, {{0, 0}, {0.5, 0}, {1, 0}, {-1, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}, Rule::crossesAxis,
+              2, "touches the axis");
   // Reaching the axis at a point the curve passes through stays valid (a pole).
   EXPECT_NO_THROW(Spline(SplineKind::quadratic, std::vector<Point2>{{0, 0}, {0.5, 0}, {0.5, 0.5}, {0.5, 1}, {0, 1}}));
   // And a curve coming within 1e-6 of the axis (r = (1 - 2u)^2 + 4e-6 u (1 - u)) does not touch it.
-  EXPECT_NO_THROW(Spline(SplineKind::quadratic, std::vector<Point2>{{0, 0}, {0.5, 0}, {1, 0}, {-1 + 2e-6, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}));
+  EXPECT_NO_THROW(Spline(SplineKind::quadratic,
+                         std::vector<Point2>{{0, 0}, {0.5, 0}, {1, 0}, {-1 + 2e-6, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}));
 }
 
 TEST(SplineTest, InterpolatingKindsRefuseRepeatedPoints) {
@@ -119,16 +120,25 @@ TEST(SplineTest, CurvesRunningWithinRoundingOfThemselvesAreRefusedQuickly) {
   // their length (2^-39 of the extent), where sub-parts separate only when about that small: the
   // check used to subdivide without end; it must refuse them (and end).
   expectError(SplineKind::quadratic,
-              {{0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, -1.3642420526593924e-11},
-               {0.0, 0.4375}, {0.0, 2.091837814077735e-11}, {8.185452315956354e-12, 0.125}, {0.0, 0.0},
-               {0.0, 0.500000000001819}, {0.0, 0.0625}, {0.500000000001819, 0.0}},
+              {{0.0, 0.4375},
+               {0.0, 2.091837814077735e-11},
+               {8.185452315956354e-12, 0.125},
+               {0.0, -1.3642420526593924e-11},
+               {0.0, 0.4375},
+               {0.0, 2.091837814077735e-11},
+               {8.185452315956354e-12, 0.125},
+               {0.0, 0.0},
+               {0.0, 0.500000000001819},
+               {0.0, 0.0625},
+               {0.500000000001819, 0.0}},
               Rule::selfIntersecting, 0, "run that close for long");
 }
 
 TEST(SplineTest, NearlyTouchingPartsAndSharpCornersAreValid) {
   // A thin wall: up the outside and down the inside 1e-6 apart, a sharp rim between.
-  EXPECT_NO_THROW(Spline(SplineKind::bezier,
-                         std::vector<Point2>{{0, 0}, {0.3, 0}, {0.5, 0.4}, {0.5, 1}, {0.5 - 1e-6, 0.6}, {0.3 - 1e-6, 1e-6}, {0, 1e-6}}));
+  EXPECT_NO_THROW(Spline(
+      SplineKind::bezier,
+      std::vector<Point2>{{0, 0}, {0.3, 0}, {0.5, 0.4}, {0.5, 1}, {0.5 - 1e-6, 0.6}, {0.3 - 1e-6, 1e-6}, {0, 1e-6}}));
   // Every closed test spline.
   for (const testing::NamedSpline& s : testing::closedSplines()) {
     EXPECT_NO_THROW({
@@ -204,7 +214,8 @@ TEST(SplineTest, NaturalSplineIsC2ThroughItsPointsWithFreeEnds) {
     EXPECT_NEAR(before.z, after.z, 1e-9);
   }
   // Free ends: zero second derivative.
-  const Point2 start = secondDerivative(c, 0, false, h(0)), end = secondDerivative(c, p.size() - 2, true, h(p.size() - 2));
+  const Point2 start = secondDerivative(c, 0, false, h(0)),
+               end = secondDerivative(c, p.size() - 2, true, h(p.size() - 2));
   EXPECT_NEAR(start.r, 0, 1e-9);
   EXPECT_NEAR(start.z, 0, 1e-9);
   EXPECT_NEAR(end.r, 0, 1e-9);

@@ -41,7 +41,8 @@ const Variant kVariants[] = {
 const Variant kDefaultOnly[] = {kVariants[0]};
 
 reference::RefRay toRef(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 double norm(Vec3 v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
@@ -57,7 +58,8 @@ struct Built {
 
 std::vector<Built> closedSplines() {
   std::vector<Built> built;
-  for (const testing::NamedSpline& named : testing::closedSplines()) built.push_back({named, Spline(named.kind, named.points)});
+  for (const testing::NamedSpline& named : testing::closedSplines())
+    built.push_back({named, Spline(named.kind, named.points)});
   return built;
 }
 
@@ -68,7 +70,8 @@ std::vector<Built> closedSplines() {
 long double sphereHit(const Ray& ray, long double radius) {
   const long double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
   const long double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-  const long double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz, c = ox * ox + oy * oy + oz * oz - radius * radius;
+  const long double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz,
+                    c = ox * ox + oy * oy + oz * oz - radius * radius;
   const long double disc = b * b - a * c;
   if (disc < 0) return -1;
   const long double t0 = (-b - std::sqrt(disc)) / a, t1 = (-b + std::sqrt(disc)) / a;
@@ -111,7 +114,8 @@ TEST(SplineAnalyticTest, CubicArcSphereLiesBetweenTheSphereAndItsKnownOffset) {
           const double sine = norm({n.y * p.z - n.z * p.y, n.z * p.x - n.x * p.z, n.x * p.y - n.y * p.x}) / norm(p);
           ok = ok && sine <= 12 * error / (radius * std::numbers::pi / pieces) + 1e-6;
         }
-        if (!ok && ++wrong <= 3) ADD_FAILURE() << variant.name << ", " << pieces << " arcs: hit " << (hit ? hit->t : -1.0f);
+        if (!ok && ++wrong <= 3)
+          ADD_FAILURE() << variant.name << ", " << pieces << " arcs: hit " << (hit ? hit->t : -1.0f);
       }
       EXPECT_EQ(wrong, 0u) << variant.name;
       if (pieces == 4) report("cubic-arc sphere between its closed-form bounds", variant.name, fired, wrong);
@@ -133,10 +137,12 @@ TEST(SplineAnalyticTest, CubicArcTorusLiesBetweenTheTorusAndItsKnownOffset) {
       const Vec3 target{0.9f * u(random), 0.9f * u(random), 0.3f * u(random)};
       const Ray ray{o, {target.x - o.x, target.y - o.y, target.z - o.z}};
       const reference::RefRay ref = toRef(ray);
-      if (std::hypot(std::hypot(double(o.x), double(o.y)) - major, double(o.z)) < minor + error + 1e-3) continue;  // from outside
+      if (std::hypot(std::hypot(double(o.x), double(o.y)) - major, double(o.z)) < minor + error + 1e-3)
+        continue;  // from outside
       ++fired;
       const std::optional<Hit> hit = intersect(shape, ray);
-      const auto inner = reference::intersectTorus(major, minor, ref), outer = reference::intersectTorus(major, minor + error, ref);
+      const auto inner = reference::intersectTorus(major, minor, ref),
+                 outer = reference::intersectTorus(major, minor + error, ref);
       const double slack = 4 * kFloatRoundoff;
       bool ok;
       if (!hit) {
@@ -145,12 +151,12 @@ TEST(SplineAnalyticTest, CubicArcTorusLiesBetweenTheTorusAndItsKnownOffset) {
         const double rho = std::hypot(double(hit->point.x), double(hit->point.y));
         const double distance = std::hypot(rho - major, double(hit->point.z)) - minor;
         const double dn = norm(ray.direction);
-        ok = outer.has_value() && distance >= -slack && distance <= error + slack && (hit->t - double(outer->t)) * dn >= -slack &&
-             (!inner || (double(inner->t) - hit->t) * dn >= -slack);
+        ok = outer.has_value() && distance >= -slack && distance <= error + slack &&
+             (hit->t - double(outer->t)) * dn >= -slack && (!inner || (double(inner->t) - hit->t) * dn >= -slack);
       }
       if (!ok && ++wrong <= 3) {
-        ADD_FAILURE() << variant.name << ": hit " << (hit ? hit->t : -1.0f) << ", torus " << (inner ? double(inner->t) : -1.0)
-                      << ", offset torus " << (outer ? double(outer->t) : -1.0);
+        ADD_FAILURE() << variant.name << ": hit " << (hit ? hit->t : -1.0f) << ", torus "
+                      << (inner ? double(inner->t) : -1.0) << ", offset torus " << (outer ? double(outer->t) : -1.0);
       }
     }
     report("cubic-arc torus between its closed-form bounds", variant.name, fired, wrong);
@@ -200,12 +206,13 @@ void checkAgainstOracle(const char* name, std::vector<OracleCase>& cases) {
             (!got || std::abs(got->t - double(expected->t)) * dn <= 0x1p-22 * (std::abs(got->t) * dn + c.size))) {
           continue;
         }
-        if (c.fragile[i] < 0) c.fragile[i] = reference::curveVerdictIsFragile(c.built->spline.bezier(), toRef(ray), 1e-9L * c.size, c.size);
+        if (c.fragile[i] < 0)
+          c.fragile[i] = reference::curveVerdictIsFragile(c.built->spline.bezier(), toRef(ray), 1e-9L * c.size, c.size);
         if (c.fragile[i] == 1) continue;
         if (++wrong <= 3) {
-          ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=(" << ray.direction.x
-                        << ", " << ray.direction.y << ", " << ray.direction.z << "): library " << (got ? got->t : -1.0f)
-                        << ", oracle " << (expected ? double(expected->t) : -1.0);
+          ADD_FAILURE() << "o=(" << ray.origin.x << ", " << ray.origin.y << ", " << ray.origin.z << ") d=("
+                        << ray.direction.x << ", " << ray.direction.y << ", " << ray.direction.z << "): library "
+                        << (got ? got->t : -1.0f) << ", oracle " << (expected ? double(expected->t) : -1.0);
         }
       }
     }
@@ -217,8 +224,8 @@ void checkAgainstOracle(const char* name, std::vector<OracleCase>& cases) {
 TEST(SplineOracleTest, IncoherentRaysAgreeWithTheLongDoubleOracle) {
   std::mt19937_64 random(43);
   const std::vector<Built> splines = closedSplines();
-  std::vector<OracleCase> cases =
-      oracleCases(splines, [&](const Shape& shape) { return testing::incoherentRays(shape, random, testing::scaledRays(1000)); });
+  std::vector<OracleCase> cases = oracleCases(
+      splines, [&](const Shape& shape) { return testing::incoherentRays(shape, random, testing::scaledRays(1000)); });
   checkAgainstOracle("incoherent rays against the long-double oracle", cases);
 }
 
@@ -226,8 +233,8 @@ TEST(SplineOracleTest, AxisAlignedRaysAgreeWithTheLongDoubleOracle) {
   // Along the axis, through it, perpendicular to it (in the planes of the parts' ends half the time).
   std::mt19937_64 random(44);
   const std::vector<Built> splines = closedSplines();
-  std::vector<OracleCase> cases =
-      oracleCases(splines, [&](const Shape& shape) { return testing::axisAlignedRays(shape, random, testing::scaledRays(600)); });
+  std::vector<OracleCase> cases = oracleCases(
+      splines, [&](const Shape& shape) { return testing::axisAlignedRays(shape, random, testing::scaledRays(600)); });
   checkAgainstOracle("rays along, through and perpendicular to the axis", cases);
 }
 
@@ -245,7 +252,8 @@ TEST(SplineOracleTest, NearlyHorizontalRaysAgreeWithTheLongDoubleOracle) {
       const double height = box.lower.z + (box.upper.z - box.lower.z) * 0.5 * (1 + unit(random));
       const float dz = float(std::pow(10.0, exponent(random)) * (unit(random) < 0 ? -1 : 1));
       const double c = std::cos(phi), sn = std::sin(phi);
-      rays.push_back({{float(3 * c - offset * sn), float(3 * sn + offset * c), float(height)}, {float(-c), float(-sn), dz}});
+      rays.push_back(
+          {{float(3 * c - offset * sn), float(3 * sn + offset * c), float(height)}, {float(-c), float(-sn), dz}});
     }
     return rays;
   });
@@ -268,9 +276,10 @@ TEST(SplineAgreementTest, EverySearchGivesTheSameHitBitForBit) {
       for (const Ray& ray : rays) {
         const std::optional<Hit> a = intersect(reference, ray), b = intersect(shape, ray);
         ++fired;
-        const bool same = a.has_value() == b.has_value() &&
-                          (!a || (a->t == b->t && a->normal.x == b->normal.x && a->normal.y == b->normal.y &&
-                                  a->normal.z == b->normal.z && a->u == b->u && a->v == b->v && a->segment == b->segment));
+        const bool same =
+            a.has_value() == b.has_value() &&
+            (!a || (a->t == b->t && a->normal.x == b->normal.x && a->normal.y == b->normal.y &&
+                    a->normal.z == b->normal.z && a->u == b->u && a->v == b->v && a->segment == b->segment));
         const bool anySame = occluded(shape, ray) == a.has_value();
         if ((!same || !anySame) && ++wrong <= 3) ADD_FAILURE() << s.named.name << ", " << variant.name;
       }
@@ -291,10 +300,11 @@ TEST(SplineHardCasesTest, RaysFromInsideAimedAtPartEndsNeverLeak) {
   std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi);
   const std::vector<Built> splines = closedSplines();
   for (const Variant& variant : kVariants) {
-    const std::size_t perSpline = testing::scaledRays(variant.options.method == Method::mibit && variant.options.wideNodes &&
-                                                              variant.options.shell == ShellKind::cylinder && variant.options.monotoneSplit
-                                                          ? 50'000
-                                                          : 10'000);
+    const std::size_t perSpline =
+        testing::scaledRays(variant.options.method == Method::mibit && variant.options.wideNodes &&
+                                    variant.options.shell == ShellKind::cylinder && variant.options.monotoneSplit
+                                ? 50'000
+                                : 10'000);
     std::size_t fired = 0, leaks = 0;
     for (const Built& s : splines) {
       SCOPED_TRACE(std::string(variant.name) + ", " + s.named.name + ", seed " + std::to_string(kSeed));
@@ -332,10 +342,12 @@ TEST(SplineHardCasesTest, RaysThroughAnApexHitIt) {
     std::vector<Point2> points;
     Vec3 apex;
   };
-  std::vector<ApexCase> cases = {{"sphere, south pole", SplineKind::bezier, testing::bezierSphere(0.5, 4), {0, 0, -0.5f}},
-                                 {"sphere, north pole", SplineKind::bezier, testing::bezierSphere(0.5, 4), {0, 0, 0.5f}}};
+  std::vector<ApexCase> cases = {
+      {"sphere, south pole", SplineKind::bezier, testing::bezierSphere(0.5, 4), {0, 0, -0.5f}},
+      {"sphere, north pole", SplineKind::bezier, testing::bezierSphere(0.5, 4), {0, 0, 0.5f}}};
   for (const testing::NamedSpline& s : testing::closedSplines()) {
-    if (s.name.find("hourglass") != std::string::npos) cases.push_back({"hourglass pinch", s.kind, s.points, {0, 0, 0}});
+    if (s.name.find("hourglass") != std::string::npos)
+      cases.push_back({"hourglass pinch", s.kind, s.points, {0, 0, 0}});
   }
   for (const Variant& variant : kVariants) {
     std::size_t fired = 0, wrong = 0;
@@ -348,7 +360,8 @@ TEST(SplineHardCasesTest, RaysThroughAnApexHitIt) {
         const std::optional<Hit> hit = intersect(shape, {origin, d});
         ++fired;
         if (!hit || hit->t > 2.0f * (1 + 4 * float(kFloatRoundoff))) {
-          if (++wrong <= 3) ADD_FAILURE() << variant.name << ", " << c.name << ": d=(" << d.x << ", " << d.y << ", " << d.z << ")";
+          if (++wrong <= 3)
+            ADD_FAILURE() << variant.name << ", " << c.name << ": d=(" << d.x << ", " << d.y << ", " << d.z << ")";
         }
       }
     }
@@ -374,10 +387,12 @@ TEST(SplineHardCasesTest, NearlyHorizontalRaysGrazingThePinchStayOnTheSurface) {
       ++fired;
       const std::optional<Hit> hit = intersect(shape, ray);
       if (!hit) continue;
-      const long double x = ray.origin.x + (long double)hit->t * ray.direction.x, y = ray.origin.y + (long double)hit->t * ray.direction.y,
+      const long double x = ray.origin.x + (long double)hit->t * ray.direction.x,
+                        y = ray.origin.y + (long double)hit->t * ray.direction.y,
                         z = ray.origin.z + (long double)hit->t * ray.direction.z;
       const double residual = double(reference::curveMeridianDistance(spline.bezier(), x, y, z));
-      if (residual > 8 * kFloatRoundoff * 3.0 && ++wrong <= 3) ADD_FAILURE() << "dz " << dz << ": residual " << residual;
+      if (residual > 8 * kFloatRoundoff * 3.0 && ++wrong <= 3)
+        ADD_FAILURE() << "dz " << dz << ": residual " << residual;
     }
     report("apex: nearly horizontal rays grazing the pinch stay on the surface", variant.name, fired, wrong);
     EXPECT_EQ(wrong, 0u);
@@ -405,8 +420,8 @@ TEST(SplineHardCasesTest, TangentRaysGiveNoNaNAndNoHitOffTheSurface) {
         if (!(len > 0)) continue;
         const double er = (b.r - a.r) / len, ez = (b.z - a.z) / len;  // the curve's tangent
         const double w = 2 * unit(random) - 1, tphi = std::sqrt(std::max(0.0, 1 - w * w));
-        const Vec3 d{float(w * er * std::cos(phi) - tphi * std::sin(phi)), float(w * er * std::sin(phi) + tphi * std::cos(phi)),
-                     float(w * ez)};
+        const Vec3 d{float(w * er * std::cos(phi) - tphi * std::sin(phi)),
+                     float(w * er * std::sin(phi) + tphi * std::cos(phi)), float(w * ez)};
         const Vec3 q{float(p.r * std::cos(phi)), float(p.r * std::sin(phi)), float(p.z)};
         const Ray ray{{q.x - d.x * float(size), q.y - d.y * float(size), q.z - d.z * float(size)}, d};
         ++fired;
@@ -414,7 +429,8 @@ TEST(SplineHardCasesTest, TangentRaysGiveNoNaNAndNoHitOffTheSurface) {
         if (!hit) continue;
         const bool finite = std::isfinite(hit->t) && std::isfinite(hit->normal.x) && std::isfinite(hit->normal.y) &&
                             std::isfinite(hit->normal.z) && std::isfinite(hit->u) && std::isfinite(hit->v);
-        const double residual = double(reference::curveMeridianDistance(s.spline.bezier(), hit->point.x, hit->point.y, hit->point.z));
+        const double residual =
+            double(reference::curveMeridianDistance(s.spline.bezier(), hit->point.x, hit->point.y, hit->point.z));
         if (!finite || residual > 4 * kFloatRoundoff * (norm(hit->point) + size)) {
           if (++wrong <= 3) ADD_FAILURE() << s.named.name << ", " << variant.name << ": residual " << residual;
         }
@@ -448,7 +464,8 @@ TEST(SplineHardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
       const double cz = 0.5 * (double(box.lower.z) + box.upper.z);
       std::uniform_real_distribution<double> inBox(0.0, 1.0);
       for (int i = 0; i < 1000; ++i) {
-        const double gx = gauss(random), gy = gauss(random), gz = gauss(random), g = std::sqrt(gx * gx + gy * gy + gz * gz);
+        const double gx = gauss(random), gy = gauss(random), gz = gauss(random),
+                     g = std::sqrt(gx * gx + gy * gy + gz * gz);
         const double reach = setting.distance * size;
         const Vec3 origin{float(reach * gx / g), float(reach * gy / g), float(cz + reach * gz / g)};
         const Vec3 target{float(box.lower.x + inBox(random) * (box.upper.x - box.lower.x)),
@@ -463,9 +480,12 @@ TEST(SplineHardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
         bool ok = got.has_value() == expected.has_value();
         if (ok && got) {
           const double cosine = std::abs(double(expected->nx * ray.direction.x + expected->ny * ray.direction.y +
-                                                expected->nz * ray.direction.z)) / dn;
-          ok = std::abs(got->t - double(expected->t)) * dn <= 2 * kFloatRoundoff * got->t * dn + 4 * resolution / std::max(cosine, 1e-3);
-          const double residual = double(reference::curveMeridianDistance(spline.bezier(), got->point.x, got->point.y, got->point.z));
+                                                expected->nz * ray.direction.z)) /
+                                dn;
+          ok = std::abs(got->t - double(expected->t)) * dn <=
+               2 * kFloatRoundoff * got->t * dn + 4 * resolution / std::max(cosine, 1e-3);
+          const double residual =
+              double(reference::curveMeridianDistance(spline.bezier(), got->point.x, got->point.y, got->point.z));
           ok = ok && residual <= 4 * kFloatRoundoff * (norm(got->point) + size);
         }
         if (!ok) {
@@ -478,8 +498,8 @@ TEST(SplineHardCasesTest, FarOriginsAndExtremeScalesKeepTheInputsPrecision) {
             }
           }
           if (!fragile && ++wrong <= 3) {
-            ADD_FAILURE() << "scale " << setting.scale << ": oracle " << (expected ? double(expected->t) : -1.0) << ", library "
-                          << (got ? got->t : -1.0f);
+            ADD_FAILURE() << "scale " << setting.scale << ": oracle " << (expected ? double(expected->t) : -1.0)
+                          << ", library " << (got ? got->t : -1.0f);
           }
         }
       }
@@ -504,7 +524,8 @@ TEST(SplineHardCasesTest, EveryHitLiesOnTheSurfaceWithAUnitConsistentNormal) {
         const std::optional<Hit> hit = intersect(shape, ray);
         if (!hit) continue;
         ++fired;
-        const double residual = double(reference::curveMeridianDistance(s.spline.bezier(), hit->point.x, hit->point.y, hit->point.z));
+        const double residual =
+            double(reference::curveMeridianDistance(s.spline.bezier(), hit->point.x, hit->point.y, hit->point.z));
         const auto expected = reference::intersectCurve(s.spline.bezier(), toRef(ray));
         bool sameNormal = true;
         if (expected && std::abs(double(expected->t) - hit->t) * norm(ray.direction) < 1e-5 * size) {
@@ -517,8 +538,8 @@ TEST(SplineHardCasesTest, EveryHitLiesOnTheSurfaceWithAUnitConsistentNormal) {
         const bool ok = residual <= 4 * kFloatRoundoff * (norm(hit->point) + size) &&
                         std::abs(norm(hit->normal) - 1.0) <= 4 * kFloatRoundoff && sameNormal && vInPart;
         if (!ok && ++wrong <= 3) {
-          ADD_FAILURE() << "residual " << residual << ", |n| " << norm(hit->normal) << ", same normal " << sameNormal << ", v "
-                        << hit->v << " in [" << v0 << ", " << v1 << "]";
+          ADD_FAILURE() << "residual " << residual << ", |n| " << norm(hit->normal) << ", same normal " << sameNormal
+                        << ", v " << hit->v << " in [" << v0 << ", " << v1 << "]";
         }
       }
     }
@@ -534,7 +555,8 @@ TEST(SplineHardCasesTest, VIsTheNormalisedArcLength) {
   const double error = testing::arcError(radius, std::numbers::pi / 8);
   for (int i = 1; i < 200; ++i) {
     const double theta = std::numbers::pi * i / 200 - std::numbers::pi / 2;  // latitude
-    const Ray ray{{float(3 * std::cos(theta)), 0.0f, float(3 * std::sin(theta))}, {float(-std::cos(theta)), 0.0f, float(-std::sin(theta))}};
+    const Ray ray{{float(3 * std::cos(theta)), 0.0f, float(3 * std::sin(theta))},
+                  {float(-std::cos(theta)), 0.0f, float(-std::sin(theta))}};
     const std::optional<Hit> hit = intersect(shape, ray);
     ASSERT_TRUE(hit.has_value());
     EXPECT_NEAR(hit->v, (theta + std::numbers::pi / 2) / std::numbers::pi, 20 * error + 1e-6) << theta;
@@ -607,7 +629,9 @@ TEST(SplineClosestPointTest, MatchesTheOraclesDistanceToTheCurve) {
       const double expected = double(reference::curveMeridianDistance(s.spline.bezier(), p.x, p.y, p.z));
       EXPECT_NEAR(closest.distance, expected, 1e-6 * (1 + expected)) << s.named.name;
       // The point it names lies on the surface, at that distance.
-      EXPECT_LE(double(reference::curveMeridianDistance(s.spline.bezier(), closest.point.x, closest.point.y, closest.point.z)), 1e-6);
+      EXPECT_LE(double(reference::curveMeridianDistance(s.spline.bezier(), closest.point.x, closest.point.y,
+                                                        closest.point.z)),
+                1e-6);
       const MeridianPoint m = closestMeridianPoint(shape, {std::hypot(double(p.x), double(p.y)), double(p.z)});
       EXPECT_NEAR(m.distance, expected, 1e-9 * (1 + expected)) << s.named.name;
     }
@@ -664,7 +688,8 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
         const Ray& ray = rays[first + i];
         valid[i] = -1;
         packet.ray.org_x[i] = ray.origin.x, packet.ray.org_y[i] = ray.origin.y, packet.ray.org_z[i] = ray.origin.z;
-        packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y, packet.ray.dir_z[i] = ray.direction.z;
+        packet.ray.dir_x[i] = ray.direction.x, packet.ray.dir_y[i] = ray.direction.y,
+        packet.ray.dir_z[i] = ray.direction.z;
         packet.ray.tnear[i] = ray.tnear, packet.ray.tfar[i] = ray.tfar, packet.ray.mask[i] = ~0u;
         packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
       }
@@ -673,8 +698,18 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
         const Ray& ray = rays[first + i];
         const std::optional<Hit> expected = intersect(shape, ray);
         RTCRayHit one{};
-        one.ray = {ray.origin.x, ray.origin.y, ray.origin.z, ray.tnear, ray.direction.x, ray.direction.y, ray.direction.z,
-                   0.0f, ray.tfar, ~0u, 0u, 0u};
+        one.ray = {ray.origin.x,
+                   ray.origin.y,
+                   ray.origin.z,
+                   ray.tnear,
+                   ray.direction.x,
+                   ray.direction.y,
+                   ray.direction.z,
+                   0.0f,
+                   ray.tfar,
+                   ~0u,
+                   0u,
+                   0u};
         one.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         query.intersect(scene, one);
         RTCRay shadow = one.ray;
@@ -685,7 +720,8 @@ TEST(SplineEmbreeTest, EveryEmbreePathAnswersLikeThePureQuery) {
         EXPECT_EQ(expected.has_value(), shadow.tfar == -INFINITY);
         if (!expected) continue;
         for (const auto& [t, nx, nz, u, v, prim] :
-             {std::tuple{packet.ray.tfar[i], packet.hit.Ng_x[i], packet.hit.Ng_z[i], packet.hit.u[i], packet.hit.v[i], packet.hit.primID[i]},
+             {std::tuple{packet.ray.tfar[i], packet.hit.Ng_x[i], packet.hit.Ng_z[i], packet.hit.u[i], packet.hit.v[i],
+                         packet.hit.primID[i]},
               std::tuple{one.ray.tfar, one.hit.Ng_x, one.hit.Ng_z, one.hit.u, one.hit.v, one.hit.primID}}) {
           EXPECT_EQ(t, expected->t);
           EXPECT_EQ(nx, expected->normal.x);

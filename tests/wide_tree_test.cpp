@@ -9,8 +9,8 @@
 // - childCount <= kMaxChildren, every record belongs to one node, the padding records are empty;
 // - the depth is the node levels above the leaves: the leaves grouped kMaxChildren at a time, level
 //   by level, so every leaf lies at that depth and it is the ceiling of log64 of the leaf count.
-#include "mibit/mibit_tree.h"
 #include "mibit/wide_tree.h"
+#include "mibit/mibit_tree.h"
 #include "support/hard_profiles.h"
 #include "support/test_profiles.h"
 #include "support/test_seeds.h"

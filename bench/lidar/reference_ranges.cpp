@@ -8,7 +8,9 @@ namespace revolve::bench {
 namespace {
 
 double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3d cross(const Vec3d& a, const Vec3d& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+Vec3d cross(const Vec3d& a, const Vec3d& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 Vec3d times(const std::array<Vec3d, 3>& m, const Vec3d& v) { return {dot(m[0], v), dot(m[1], v), dot(m[2], v)}; }
 
@@ -30,7 +32,8 @@ void segmentHits(const Vec3d& p, const Vec3d& d, Point2 a, Point2 b, double& bes
   // x^2 + y^2 = rho^2, with rho >= 0 (not the mirror nappe) and z within the segment.
   const double s = (b.r - a.r) / (b.z - a.z);
   const double A = a.r + (p[2] - a.z) * s, B = d[2] * s;
-  const double qa = d[0] * d[0] + d[1] * d[1] - B * B, qb = p[0] * d[0] + p[1] * d[1] - A * B, qc = p[0] * p[0] + p[1] * p[1] - A * A;
+  const double qa = d[0] * d[0] + d[1] * d[1] - B * B, qb = p[0] * d[0] + p[1] * d[1] - A * B,
+               qc = p[0] * p[0] + p[1] * p[1] - A * A;
   double roots[2];
   int count = 0;
   if (qa == 0) {
@@ -61,15 +64,17 @@ ReferenceRanges::ReferenceRanges(const io::SceneDescription& scene) {
     // World to object: scale^-1 rotation^T (x - translate).
     const double theta = t.rotateDegrees * std::numbers::pi / 180, c = std::cos(theta), s = std::sin(theta);
     const auto& k = t.rotateAxis;
-    const double r[3][3] = {{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-                            {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-                            {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
+    const double r[3][3] = {
+        {c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
+        {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
+        {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
     Object o{&profiles_[object.profile], {}, t.translate, {}, 0};
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) o.inverse[i][j] = r[j][i] / t.scale[i];
     }
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-    for (const Point2 p : *o.profile) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+    for (const Point2 p : *o.profile)
+      rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     o.centre = {0, 0, 0.5 * (zLow + zHigh)};
     o.radius = std::hypot(rMax, 0.5 * (zHigh - zLow));
     objects_.push_back(o);

@@ -33,7 +33,7 @@ class ReferenceRanges {
     const std::vector<Point2>* profile;
     std::array<Vec3d, 3> inverse;  // world to object, linear part
     Vec3d translate;
-    Vec3d centre;                  // object space: a sphere holding the profile
+    Vec3d centre;  // object space: a sphere holding the profile
     double radius;
   };
   struct Triangle {

@@ -24,15 +24,15 @@
 #include "io/sensor_file.h"
 #include "io/text_files.h"
 #include "lidar/reference_ranges.h"
-#include "run_info.h"
 #include "robot/lidar.h"
 #include "robot/sensor_rig.h"
+#include "run_info.h"
 #include "scene/embree_scene.h"
 
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -84,13 +84,15 @@ ObjectClass classOf(const io::SceneDescription& scene, std::int64_t object) {
 // The reference answer of every beam of every pose, in the scan's order, along the very ray the
 // lidar traces (origin and direction rounded to float as it rounds them): what is measured is then
 // the geometry's error, not the rounding of the beam, which moves a grazing return a long way.
-std::vector<std::optional<bench::ReferenceHit>> referenceScan(const bench::ReferenceRanges& reference, const io::SensorDescription& s,
+std::vector<std::optional<bench::ReferenceHit>> referenceScan(const bench::ReferenceRanges& reference,
+                                                              const io::SensorDescription& s,
                                                               const std::vector<io::RobotPose>& poses) {
   const std::vector<double> azimuths = io::fanAngles(s.horizontal);
   const std::size_t perPose = azimuths.size() * s.elevations.size();
   std::vector<std::optional<bench::ReferenceHit>> hits(poses.size() * perPose);
   tbb::parallel_for(std::size_t{0}, hits.size(), [&](std::size_t index) {
-    const std::size_t pose = index / perPose, ring = (index % perPose) / azimuths.size(), column = index % azimuths.size();
+    const std::size_t pose = index / perPose, ring = (index % perPose) / azimuths.size(),
+                      column = index % azimuths.size();
     const robot::SensorFrame frame = robot::sensorFrame(s.pose, poses[pose]);
     const robot::Vec3d direction = frame.rotate(robot::beamDirection(azimuths[column], s.elevations[ring]));
     bench::Vec3d o, d;
@@ -103,8 +105,9 @@ std::vector<std::optional<bench::ReferenceHit>> referenceScan(const bench::Refer
 }
 
 struct ClassError {
-  std::size_t beams = 0, otherHit = 0;  // beams whose reference hit is the class; of them, traced to another object or none
-  std::size_t overCentimetre = 0;       // same object, but more than 1 cm off (a mesh's ray leaking through an edge)
+  std::size_t beams = 0,
+              otherHit = 0;        // beams whose reference hit is the class; of them, traced to another object or none
+  std::size_t overCentimetre = 0;  // same object, but more than 1 cm off (a mesh's ray leaking through an edge)
   double sum = 0, max = 0;
   double mean() const { return beams > otherHit ? sum / double(beams - otherHit) : 0.0; }
 };
@@ -132,7 +135,11 @@ std::map<ObjectClass, ClassError> rangeErrors(const io::SceneDescription& scene,
 }
 
 Json errorJson(const ClassError& e) {
-  return {{"beams", e.beams}, {"other_hit", e.otherHit}, {"mean_m", e.mean()}, {"max_m", e.max}, {"over_1cm", e.overCentimetre}};
+  return {{"beams", e.beams},
+          {"other_hit", e.otherHit},
+          {"mean_m", e.mean()},
+          {"max_m", e.max},
+          {"over_1cm", e.overCentimetre}};
 }
 
 struct Options {
@@ -146,7 +153,8 @@ void run(const Options& options, const std::string& commandLine) {
   const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
-  for (const io::SceneProfile& profile : scene.profiles) outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  for (const io::SceneProfile& profile : scene.profiles)
+    outputs.addInput("a profile CSV of the scene", profile.csvFile);
   outputs.addInput("the poses file (--poses)", options.poses);
   outputs.add("--out", options.output);
   const bench::ReferenceRanges reference(scene);
@@ -171,7 +179,9 @@ void run(const Options& options, const std::string& commandLine) {
   Json errors = Json::array();
   std::vector<double> worstMean(geometries.size(), 0);  // over both sensors and both classes
   for (std::size_t g = 0; g < geometries.size(); ++g) {
-    Json entry{{"geometry", geometries[g].name}, {"slices", geometries[g].slices}, {"embree_bytes", geometries[g].built->embreeBytes()},
+    Json entry{{"geometry", geometries[g].name},
+               {"slices", geometries[g].slices},
+               {"embree_bytes", geometries[g].built->embreeBytes()},
                {"build_seconds", geometries[g].built->buildSeconds()}};
     for (std::size_t s = 0; s < sensors.size(); ++s) {
       const io::ScanTable scan = robot::Lidar(*geometries[g].built, sensors[s]).scan(poses);
@@ -183,7 +193,8 @@ void run(const Options& options, const std::string& commandLine) {
       }
       entry[s == 0 ? "scan_2d" : "scan_3d"] = perSensor;
     }
-    std::printf("%-10s mean error (worst of poles/barrels, 2-D/3-D) %.3g m\n", geometries[g].name.c_str(), worstMean[g]);
+    std::printf("%-10s mean error (worst of poles/barrels, 2-D/3-D) %.3g m\n", geometries[g].name.c_str(),
+                worstMean[g]);
     errors.push_back(entry);
   }
   // The fewest slices whose worst mean error is at most revolve's; when none is, the most accurate
@@ -235,20 +246,30 @@ void run(const Options& options, const std::string& commandLine) {
         std::sort(times.begin(), times.end());
         const double median = times[times.size() / 2];
         const double scansPerSecond = double(poses.size()) / median;
-        const double beams = double(poses.size()) * double(sensors[s].horizontal.samples) * double(sensors[s].elevations.size());
-        throughput.push_back({{"geometry", geometries[g].name}, {"slices", geometries[g].slices}, {"sensor", s == 0 ? "2d" : "3d"},
-                              {"threads", threads}, {"seconds", times}, {"median_seconds", median}, {"scans_per_second", scansPerSecond},
+        const double beams =
+            double(poses.size()) * double(sensors[s].horizontal.samples) * double(sensors[s].elevations.size());
+        throughput.push_back({{"geometry", geometries[g].name},
+                              {"slices", geometries[g].slices},
+                              {"sensor", s == 0 ? "2d" : "3d"},
+                              {"threads", threads},
+                              {"seconds", times},
+                              {"median_seconds", median},
+                              {"scans_per_second", scansPerSecond},
                               {"mrays_per_second", beams / median * 1e-6}});
-        std::printf("%-10s %s %d thread%s: %.4g scans/s (%.3g Mrays/s)\n", geometries[g].name.c_str(), s == 0 ? "2-D" : "3-D", threads,
-                    threads == 1 ? "" : "s", scansPerSecond, beams / median * 1e-6);
+        std::printf("%-10s %s %d thread%s: %.4g scans/s (%.3g Mrays/s)\n", geometries[g].name.c_str(),
+                    s == 0 ? "2-D" : "3-D", threads, threads == 1 ? "" : "s", scansPerSecond, beams / median * 1e-6);
       }
     }
   }
 
   Json sensorJson = Json::array();
   for (const io::SensorDescription& s : sensors) {
-    sensorJson.push_back({{"name", s.file}, {"azimuths", s.horizontal.samples}, {"min_angle", s.horizontal.minAngle},
-                          {"max_angle", s.horizontal.maxAngle}, {"elevations", s.elevations}, {"position", s.pose.position}});
+    sensorJson.push_back({{"name", s.file},
+                          {"azimuths", s.horizontal.samples},
+                          {"min_angle", s.horizontal.minAngle},
+                          {"max_angle", s.horizontal.maxAngle},
+                          {"elevations", s.elevations},
+                          {"position", s.pose.position}});
   }
   const Json result{{"command", commandLine},
                     {"date", bench::today()},
@@ -269,7 +290,9 @@ void run(const Options& options, const std::string& commandLine) {
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"Range error and scan throughput of revolve's exact surfaces against tessellated meshes (README, Robot range-finding)."};
+  CLI::App app{
+      "Range error and scan throughput of revolve's exact surfaces against tessellated meshes (README, Robot "
+      "range-finding)."};
   app.add_option("scene", options.scene, "scene file (JSON)")->required()->check(app::kNonEmpty);
   app.add_option("--poses", options.poses, "robot poses (CSV)")->required()->check(app::kNonEmpty);
   app.add_option("--out", options.output, "results (JSON)")->required()->check(app::kNonEmpty);

@@ -44,7 +44,9 @@ inline std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv,
 
 // A file name: an empty value (-o "") is an error, never taken as "not given".
 inline const CLI::Validator kNonEmpty(
-    [](std::string& value) { return value.empty() ? std::string("the value is empty; a file name is needed") : std::string(); },
+    [](std::string& value) {
+      return value.empty() ? std::string("the value is empty; a file name is needed") : std::string();
+    },
     "FILE");
 
 // A whole number of type T in [lo, hi], written in decimal. The message names what is wrong with

@@ -22,11 +22,12 @@ using Scene = std::unique_ptr<RTCSceneTy, SceneRelease>;
 inline Device newDevice(const char* config = nullptr) {
   RTCDevice device = rtcNewDevice(config);
   if (device == nullptr) {
-    throw std::runtime_error("cannot create an Embree device (error " + std::to_string(int(rtcGetDeviceError(nullptr))) +
-                             ")");
+    throw std::runtime_error("cannot create an Embree device (error " +
+                             std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
   }
   rtcSetDeviceErrorFunction(
-      device, [](void*, RTCError code, const char* message) {
+      device,
+      [](void*, RTCError code, const char* message) {
         std::fprintf(stderr, "Embree error %d: %s\n", int(code), message != nullptr ? message : "");
       },
       nullptr);

@@ -28,7 +28,8 @@ inline void requireMemory(double bytes, const std::string& what) {
   const double available = physicalMemoryBytes();
   if (available > 0 && bytes > available) {
     char text[96];
-    std::snprintf(text, sizeof text, " needs about %.3g GB, more than this machine's %.3g GB of memory", bytes * 1e-9, available * 1e-9);
+    std::snprintf(text, sizeof text, " needs about %.3g GB, more than this machine's %.3g GB of memory", bytes * 1e-9,
+                  available * 1e-9);
     throw std::runtime_error(what + text);
   }
 }

@@ -47,7 +47,8 @@ inline constexpr double kMaxScale = 0x1p40;
 // 2^40), the offset stays under 0.21 * 2^40, so rays leaving hits start within 1.25 * 2^40 again.
 inline constexpr double kMaxScaleRatio = 0x1p16;
 static_assert(1.7320508075688772 / kMinScale * (kMaxRayOrigin + kMaxWorldCoordinate) <= 0.5 * double(kEmbreeLargest));
-static_assert(kMaxScale * kMaxScale * kMaxScale * 6 < 3.4e38);  // a float determinant of 3 x 3 entries below 2^40 stays finite
+static_assert(kMaxScale * kMaxScale * kMaxScale * 6 <
+              3.4e38);  // a float determinant of 3 x 3 entries below 2^40 stays finite
 static_assert(4 * 0x1p-24 / (1 - 4 * 0x1p-24) * 3 * kMaxScaleRatio * 4.5 <= 0.25);
 
 }  // namespace revolve::app

@@ -34,8 +34,10 @@ inline std::string toleranceRefusal(std::string_view text, bool pixelAllowed) {
   std::string shown = "\"";
   for (const char c : text.substr(0, 40)) shown += (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) ? c : '?';
   shown += text.size() > 40 ? "...\"" : "\"";
-  return shown + (pixelAllowed ? " is neither \"pixel\" nor a finite number > 0 (a distance in each profile's units)"
-                               : " is not a finite number > 0 (the polyline's largest distance from the curve, in the profile's units)");
+  return shown +
+         (pixelAllowed
+              ? " is neither \"pixel\" nor a finite number > 0 (a distance in each profile's units)"
+              : " is not a finite number > 0 (the polyline's largest distance from the curve, in the profile's units)");
 }
 
 }  // namespace revolve::app

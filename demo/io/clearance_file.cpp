@@ -15,7 +15,8 @@ void writeClearanceCsv(OutputStream& out, const std::vector<ClearanceRow>& rows)
       out.print("%zu,inf,0,,,,\n", pose);
       continue;
     }
-    out.print("%zu,%.9g,%d,%" PRId64 ",%.9g,%.9g,%.9g\n", pose, row.clearance, row.collides ? 1 : 0, row.object, row.px, row.py, row.pz);
+    out.print("%zu,%.9g,%d,%" PRId64 ",%.9g,%.9g,%.9g\n", pose, row.clearance, row.collides ? 1 : 0, row.object, row.px,
+              row.py, row.pz);
   }
 }
 

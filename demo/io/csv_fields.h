@@ -28,8 +28,9 @@ class Lines {
     text_ = newline == std::string_view::npos ? std::string_view{} : text_.substr(newline + 1);
     ++number_;
     if (line.size() > kMaxCsvLineBytes) {
-      throw InputError(file_, number_, "the line is " + std::to_string(line.size()) + " bytes long; a line of these files holds at most " +
-                                           std::to_string(kMaxCsvLineBytes));
+      throw InputError(file_, number_,
+                       "the line is " + std::to_string(line.size()) +
+                           " bytes long; a line of these files holds at most " + std::to_string(kMaxCsvLineBytes));
     }
     return line;
   }
@@ -76,8 +77,10 @@ std::optional<T> parseNumber(std::string_view field) {
   if (end != field.data() + field.size()) return std::nullopt;
   if (error == std::errc::result_out_of_range) {
     const std::string text(field);
-    if constexpr (std::is_same_v<T, float>) return std::strtof(text.c_str(), nullptr);
-    else return std::strtod(text.c_str(), nullptr);
+    if constexpr (std::is_same_v<T, float>)
+      return std::strtof(text.c_str(), nullptr);
+    else
+      return std::strtod(text.c_str(), nullptr);
   }
   if (error != std::errc()) return std::nullopt;
   return value;

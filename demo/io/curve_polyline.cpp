@@ -29,10 +29,11 @@ Profile curvePolyline(const Spline& curve, double tolerance) {
   double largest = 0;
   for (const Point2& p : shape.profile().points()) largest = std::max(largest, p.r);
   if (largest == 0) return polyline;  // the curve lies on the axis itself: its own (warned-of) business
-  throw std::invalid_argument("polyline tolerance " + shortest(tolerance) + " collapses the " + splineKindName(curve.kind()) +
+  throw std::invalid_argument("polyline tolerance " + shortest(tolerance) + " collapses the " +
+                              splineKindName(curve.kind()) +
                               " spline onto the axis: every point of its polyline has r = 0, a surface of no area that "
-                              "nothing hits, where the curve reaches r = " + shortest(largest) +
-                              "; a tolerance below that keeps the polyline off the axis");
+                              "nothing hits, where the curve reaches r = " +
+                              shortest(largest) + "; a tolerance below that keeps the polyline off the axis");
 }
 
 }  // namespace revolve::io

@@ -48,7 +48,9 @@ inline std::string quotedText(std::string_view text) {
 inline std::string child(const std::string& path, std::string_view key) {
   return path.empty() ? printable(key) : path + "." + printable(key);
 }
-inline std::string element(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
+inline std::string element(const std::string& path, std::size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
 
 inline std::string joined(std::initializer_list<std::string_view> names) {
   std::string out;
@@ -84,7 +86,8 @@ class Reader {
     throw Error(file_ + ": " + (path.empty() ? "" : path + ": ") + problem);
   }
 
-  const Json& object(const Json& value, const std::string& path, std::initializer_list<std::string_view> allowed) const {
+  const Json& object(const Json& value, const std::string& path,
+                     std::initializer_list<std::string_view> allowed) const {
     if (!value.is_object()) fail(path, std::string("expected an object, found ") + value.type_name());
     for (const auto& [key, ignored] : value.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
@@ -124,14 +127,16 @@ class Reader {
     const double x = number(value, path);
     if (x != std::floor(x)) fail(path, numberText(value) + " is not a whole number");
     if (!(x >= lo && x <= hi)) {
-      fail(path, numberText(value) + " is out of range: must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      fail(path, numberText(value) + " is out of range: must lie in [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "]");
     }
     return int(x);
   }
   // A whole number in [0, 2^64): JSON integers as nlohmann reads them, never via double.
   std::uint64_t unsignedInteger(const Json& value, const std::string& path) const {
     if (value.is_number_unsigned()) return value.get<std::uint64_t>();
-    if (value.is_number_integer()) fail(path, std::to_string(value.get<std::int64_t>()) + " is negative: expected a whole number >= 0");
+    if (value.is_number_integer())
+      fail(path, std::to_string(value.get<std::int64_t>()) + " is negative: expected a whole number >= 0");
     if (value.is_number()) fail(path, numberText(value) + " is not a whole number in [0, 2^64)");
     fail(path, std::string("expected a whole number, found ") + value.type_name());
   }
@@ -148,7 +153,8 @@ class Reader {
     const std::array<double, 3> p = vec3(value, path);
     for (std::size_t i = 0; i < 3; ++i) {
       if (std::abs(p[i]) > app::kMaxWorldCoordinate) {
-        fail(element(path, i), numberText(value[i]) + " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+        fail(element(path, i),
+             numberText(value[i]) + " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
       }
     }
     return p;
@@ -204,7 +210,8 @@ Json parse(std::string_view text, const Reader<Error>& in) {
         if (!open.empty()) {
           open.back().key = parsed.get<std::string>();
           if (!open.back().keys.insert(open.back().key).second) {
-            in.fail(child(open.back().path, open.back().key), "the key appears twice in its object; each key may appear once");
+            in.fail(child(open.back().path, open.back().key),
+                    "the key appears twice in its object; each key may appear once");
           }
         }
         break;
@@ -219,7 +226,8 @@ Json parse(std::string_view text, const Reader<Error>& in) {
   } catch (const Json::exception& error) {
     std::string message = error.what();
     const std::size_t bracket = message.find("] ");
-    if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) message = message.substr(bracket + 2);
+    if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos)
+      message = message.substr(bracket + 2);
     std::string safe;
     for (const char c : message.substr(0, 300)) safe += (static_cast<unsigned char>(c) >= 0x20 && c != 0x7f) ? c : '?';
     in.fail("", "not valid JSON: " + safe);

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <csignal>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <csignal>
 
 namespace revolve::io {
 namespace {
@@ -73,7 +73,8 @@ struct Identity {
 Identity identify(const std::string& path) {
   Identity identity;
   struct stat status {};
-  if (stat(path.c_str(), &status) == 0) identity.exists = true, identity.device = status.st_dev, identity.inode = status.st_ino;
+  if (stat(path.c_str(), &status) == 0)
+    identity.exists = true, identity.device = status.st_dev, identity.inode = status.st_ino;
   std::error_code code;
   const std::filesystem::path absolute = std::filesystem::absolute(path, code);
   const std::filesystem::path normal = std::filesystem::weakly_canonical(absolute, code);
@@ -104,7 +105,8 @@ void removeTemporariesOnSignals() {
 }
 
 TemporaryRegistration::TemporaryRegistration(const std::string& path) {
-  if (path.size() >= kPathBytes) throw std::runtime_error(path.substr(0, 80) + "...: the path is too long for a temporary file");
+  if (path.size() >= kPathBytes)
+    throw std::runtime_error(path.substr(0, 80) + "...: the path is too long for a temporary file");
   for (int i = 0; i < kSlots; ++i) {
     if (!gSlots[i].claimed.exchange(true)) {
       std::memcpy(gSlots[i].path, path.c_str(), path.size() + 1);
@@ -123,7 +125,9 @@ TemporaryRegistration::~TemporaryRegistration() {
   }
 }
 
-TemporaryRegistration::TemporaryRegistration(TemporaryRegistration&& other) noexcept : slot_(other.slot_) { other.slot_ = -1; }
+TemporaryRegistration::TemporaryRegistration(TemporaryRegistration&& other) noexcept : slot_(other.slot_) {
+  other.slot_ = -1;
+}
 
 TemporaryRegistration& TemporaryRegistration::operator=(TemporaryRegistration&& other) noexcept {
   if (this != &other) {
@@ -150,7 +154,9 @@ ScratchFile::ScratchFile(std::string_view suffix) {
 
 ScratchFile::~ScratchFile() { unlink(path_.c_str()); }
 
-void OutputStream::fail(int error) const { throw std::runtime_error(output_ + ": write failed: " + std::strerror(error)); }
+void OutputStream::fail(int error) const {
+  throw std::runtime_error(output_ + ": write failed: " + std::strerror(error));
+}
 
 void OutputStream::write(const void* data, std::size_t bytes) {
   if (bytes > 0 && std::fwrite(data, 1, bytes, file_) != bytes) fail(errno);
@@ -207,8 +213,8 @@ void OutputSet::add(std::string_view option, const std::string& path) {
   }
   for (const auto& other : outputs_) {
     if (sameFile(output->identity, other->identity)) {
-      throw std::runtime_error(path + ": " + named(option) + " names the same file as " + named(other->option) + " (" + other->path +
-                               "); each output needs a file of its own");
+      throw std::runtime_error(path + ": " + named(option) + " names the same file as " + named(other->option) + " (" +
+                               other->path + "); each output needs a file of its own");
     }
   }
   const HeldSignals held;  // no window in which the temporary exists unregistered
@@ -271,8 +277,8 @@ void OutputSet::close(Output& output) {
     output.stream.reset();
     if (!flushed) failed.fail(error);
     if (!whole) {
-      throw std::runtime_error(output.path + ": write failed: the file holds " + std::to_string(status.st_size) + " of the " +
-                               std::to_string(length) + " bytes written");
+      throw std::runtime_error(output.path + ": write failed: the file holds " + std::to_string(status.st_size) +
+                               " of the " + std::to_string(length) + " bytes written");
     }
     if (!closed) failed.fail(closeError);
   } else if (output.descriptor >= 0) {

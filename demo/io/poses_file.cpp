@@ -1,8 +1,8 @@
 #include "io/poses_file.h"
 
+#include "common/ray_limits.h"
 #include "io/csv_fields.h"
 #include "io/text_files.h"
-#include "common/ray_limits.h"
 
 #include <cmath>
 #include <optional>
@@ -35,18 +35,21 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
     const std::size_t columns = withZ ? 4 : 3;
     if (fields.size() != columns) {
       throw InputError(file, lineNumber,
-                       "expected " + std::to_string(columns) + " comma-separated values (" + (withZ ? "x,y,z,yaw" : "x,y,yaw") +
-                           "), found " + std::to_string(fields.size()));
+                       "expected " + std::to_string(columns) + " comma-separated values (" +
+                           (withZ ? "x,y,z,yaw" : "x,y,yaw") + "), found " + std::to_string(fields.size()));
     }
     // `position`: a coordinate, within the limit every position keeps (common/ray_limits.h).
     const auto value = [&](std::size_t i, const char* name, bool emptyIsZero, bool position) {
       if (emptyIsZero && fields[i].empty()) return 0.0;
       const std::optional<double> x = csv::parseNumber<double>(fields[i]);
-      if (!x) throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not a number");
-      if (!std::isfinite(*x)) throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not finite");
+      if (!x)
+        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not a number");
+      if (!std::isfinite(*x))
+        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not finite");
       if (position && std::abs(*x) > app::kMaxWorldCoordinate) {
-        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) +
-                                               " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+        throw InputError(file, lineNumber,
+                         std::string(name) + " = " + csv::quote(fields[i]) +
+                             " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
       }
       return *x;
     };
@@ -57,7 +60,8 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
     pose.yaw = value(withZ ? 3 : 2, "yaw", false, false);
     poses.push_back(pose);
   }
-  if (!headerSeen) throw InputError(file, 0, "empty: expected the header \"x,y,z,yaw\" (or \"x,y,yaw\") and at least one pose");
+  if (!headerSeen)
+    throw InputError(file, 0, "empty: expected the header \"x,y,z,yaw\" (or \"x,y,yaw\") and at least one pose");
   if (poses.empty()) throw InputError(file, 0, "no poses after the header");
   return poses;
 }

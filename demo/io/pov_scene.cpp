@@ -32,7 +32,9 @@ std::string vector(const Vec3d& v) {
   return text.append(number(v[0])).append(", ").append(number(v[1])).append(", ").append(number(v[2])).append(">");
 }
 std::string povVector(const Vec3d& v) { return vector(toPov(v)); }
-std::string colour(const Rgb& c, double scale = 1) { return "rgb " + vector({c[0] * scale, c[1] * scale, c[2] * scale}); }
+std::string colour(const Rgb& c, double scale = 1) {
+  return "rgb " + vector({c[0] * scale, c[1] * scale, c[2] * scale});
+}
 
 // POV-Ray's `matrix <v00, v01, v02, v10, ..., v32>` maps a point p to (p.x v0* + p.y v1* + p.z v2* +
 // v3*): row i is the image of POV-Ray's basis vector i. With the axis swap P (its own inverse), the
@@ -66,7 +68,9 @@ double sceneExtent(const SceneDescription& scene) {
   return extent > 0 ? extent : 1;
 }
 
-std::string identifier(const char* kind, std::size_t index) { return std::string("Revolve_") + kind + "_" + std::to_string(index); }
+std::string identifier(const char* kind, std::size_t index) {
+  return std::string("Revolve_") + kind + "_" + std::to_string(index);
+}
 
 // A comment line holding a name from the scene file: no line breaks can end the comment early.
 std::string commentText(const std::string& text) {
@@ -95,7 +99,8 @@ class Writer {
          << "// POV-Ray's y is revolve's z (up) and its z is revolve's y: the swap makes revolve's right-handed\n"
          << "// z-up world POV-Ray's left-handed y-up one without mirroring the picture. The image size comes\n"
          << "// from +W +H; for revolve's whitted integrator at one sample a pixel:\n"
-         << "//   povray +I" << "scene.pov +Oimage.exr +FE +W640 +H480 -A File_Gamma=1.0\n"
+         << "//   povray +I"
+         << "scene.pov +Oimage.exr +FE +W640 +H480 -A File_Gamma=1.0\n"
          << "//   [Declare=Revolve_Depth=D (whitted's --depth)] [Declare=Revolve_Shadows=0 (--no-shadows)]\n";
     if (!warnings_.empty()) {
       head << "// Approximated (no POV-Ray equivalent):\n";
@@ -140,9 +145,10 @@ class Writer {
     if (environment.sky) {
       // Over normals spread evenly on the sphere, max(0, n_up) averages 1/4.
       for (int i = 0; i < 3; ++i) ambient[i] = 0.75 * environment.horizon[i] + 0.25 * environment.zenith[i];
-      warnings_.push_back("environment.sky: the ambient term along each normal has no POV-Ray equivalent; "
-                          "ambient_light is the sky's mean over all normals (3/4 horizon + 1/4 zenith); "
-                          "rays that escape see the sky exactly (a sky_sphere)");
+      warnings_.push_back(
+          "environment.sky: the ambient term along each normal has no POV-Ray equivalent; "
+          "ambient_light is the sky's mean over all normals (3/4 horizon + 1/4 zenith); "
+          "rays that escape see the sky exactly (a sky_sphere)");
     }
     // adc_bailout 0: POV-Ray would otherwise drop rays whose weight falls below 1/255, which
     // revolve's whitted never does.
@@ -151,8 +157,8 @@ class Writer {
         << "#default { finish { ambient 0 diffuse 0 } }\n";
     if (environment.sky) {
       // The radiance blends linearly with the direction's height, the horizon's below it.
-      out << "sky_sphere { pigment { function { min(1, max(0, y)) } color_map { [0 " << colour(environment.horizon) << "] [1 "
-          << colour(environment.zenith) << "] } } }\n\n";
+      out << "sky_sphere { pigment { function { min(1, max(0, y)) } color_map { [0 " << colour(environment.horizon)
+          << "] [1 " << colour(environment.zenith) << "] } } }\n\n";
     } else {
       out << "background { " << colour(environment.color) << " }\n\n";
     }
@@ -178,15 +184,18 @@ class Writer {
       const SceneLight& light = scene_.lights[i];
       out << "// lights[" << i << "]\n";
       if (light.type == LightType::point) {
-        out << "light_source {\n  " << povVector(light.position) << "\n  " << colour(light.intensity, 1 / (2 * kPi * fade * fade))
-            << "\n  fade_distance " << number(fade) << "\n  fade_power 2\n";
+        out << "light_source {\n  " << povVector(light.position) << "\n  "
+            << colour(light.intensity, 1 / (2 * kPi * fade * fade)) << "\n  fade_distance " << number(fade)
+            << "\n  fade_power 2\n";
       } else {
         // A parallel light from far outside the scene: every point sees the same direction.
         const double far = 1e3 * sceneExtent(scene_);
         const Vec3d from{-light.direction[0] * far, -light.direction[1] * far, -light.direction[2] * far};
-        out << "light_source {\n  " << povVector(from) << "\n  " << colour(light.irradiance, 1 / kPi) << "\n  parallel\n  point_at <0, 0, 0>\n";
+        out << "light_source {\n  " << povVector(from) << "\n  " << colour(light.irradiance, 1 / kPi)
+            << "\n  parallel\n  point_at <0, 0, 0>\n";
         if (light.angleDegrees > 0) {
-          warnings_.push_back("lights[" + std::to_string(i) + "]: a sun of apparent diameter " + number(light.angleDegrees) +
+          warnings_.push_back("lights[" + std::to_string(i) + "]: a sun of apparent diameter " +
+                              number(light.angleDegrees) +
                               " degrees has soft shadows in revolve; POV-Ray's parallel light casts hard ones (an area "
                               "light would need many shadow rays a point)");
         }
@@ -210,8 +219,8 @@ class Writer {
         case MaterialType::glass:
           // Fresnel reflection, the rest transmitted (conserve_energy) and filtered by the tint at
           // each crossing of the surface, as revolve's glass.
-          out << "  texture { pigment { rgbf <" << number(m.tint[0]) << ", " << number(m.tint[1]) << ", " << number(m.tint[2])
-              << ", 1> } finish { reflection { 0, 1 fresnel on } conserve_energy } }\n"
+          out << "  texture { pigment { rgbf <" << number(m.tint[0]) << ", " << number(m.tint[1]) << ", "
+              << number(m.tint[2]) << ", 1> } finish { reflection { 0, 1 fresnel on } conserve_energy } }\n"
               << "  interior { ior " << number(m.ior) << " }\n";
           break;
         case MaterialType::metal:
@@ -253,9 +262,9 @@ class Writer {
   void objects(std::ostream& out) const {
     for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
       const SceneObject& object = scene_.objects[i];
-      out << "object { " << identifier("Profile", object.profile) << " material { " << identifier("Material", object.material)
-          << " } " << povMatrix(object.transform) << " }  // objects[" << i << "]"
-          << (object.name.empty() ? "" : " ") << commentText(object.name) << "\n";
+      out << "object { " << identifier("Profile", object.profile) << " material { "
+          << identifier("Material", object.material) << " } " << povMatrix(object.transform) << " }  // objects[" << i
+          << "]" << (object.name.empty() ? "" : " ") << commentText(object.name) << "\n";
     }
     out << "\n";
   }
@@ -269,7 +278,8 @@ class Writer {
         if (!any) out << "mesh {  // the quads of materials." << commentText(scene_.materials[m].name) << "\n";
         any = true;
         const auto& c = quad.corners;
-        out << "  triangle { " << povVector(c[0]) << ", " << povVector(c[1]) << ", " << povVector(c[2]) << " }  // quads[" << i << "]\n"
+        out << "  triangle { " << povVector(c[0]) << ", " << povVector(c[1]) << ", " << povVector(c[2])
+            << " }  // quads[" << i << "]\n"
             << "  triangle { " << povVector(c[0]) << ", " << povVector(c[2]) << ", " << povVector(c[3]) << " }\n";
       }
       if (any) out << "  material { " << identifier("Material", m) << " }\n}\n";
@@ -283,12 +293,16 @@ class Writer {
 
 }  // namespace
 
-PovScene povScene(const SceneDescription& scene, const PovDefaults& defaults) { return Writer(scene, defaults).write(); }
+PovScene povScene(const SceneDescription& scene, const PovDefaults& defaults) {
+  return Writer(scene, defaults).write();
+}
 
-std::vector<std::string> writePovScene(const std::string& path, const SceneDescription& scene, const PovDefaults& defaults) {
+std::vector<std::string> writePovScene(const std::string& path, const SceneDescription& scene,
+                                       const PovDefaults& defaults) {
   const PovScene pov = povScene(scene, defaults);
   writeFileAtomically(path, [&](std::FILE* out) {
-    if (std::fwrite(pov.text.data(), 1, pov.text.size(), out) != pov.text.size()) throw std::runtime_error("short write");
+    if (std::fwrite(pov.text.data(), 1, pov.text.size(), out) != pov.text.size())
+      throw std::runtime_error("short write");
   });
   return pov.warnings;
 }

@@ -46,6 +46,7 @@ struct PovScene {
 PovScene povScene(const SceneDescription& scene, const PovDefaults& defaults);
 
 // povScene written to `path` through a temporary file renamed into place; returns the warnings.
-std::vector<std::string> writePovScene(const std::string& path, const SceneDescription& scene, const PovDefaults& defaults);
+std::vector<std::string> writePovScene(const std::string& path, const SceneDescription& scene,
+                                       const PovDefaults& defaults);
 
 }  // namespace revolve::io

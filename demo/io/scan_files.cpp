@@ -14,7 +14,8 @@
 namespace revolve::io {
 namespace {
 
-static_assert(std::endian::native == std::endian::little, "binary PCD is written in the byte order PCL reads on x86-64");
+static_assert(std::endian::native == std::endian::little,
+              "binary PCD is written in the byte order PCL reads on x86-64");
 
 constexpr std::size_t kBinaryPointBytes = 4 + 4 + 4 + 4 + 2 + 4;  // x y z range ring object, packed
 
@@ -28,7 +29,8 @@ char* appendFloat(char* at, float value) {
 
 ScanFormat scanFormatFor(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (extension == ".csv") return ScanFormat::csv;
   if (extension == ".pcd") return ScanFormat::pcd;
   throw std::runtime_error(path + ": unsupported scan extension \"" + extension +
@@ -42,18 +44,19 @@ ScanWriter::ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const
     return;
   }
   const std::size_t width = layout_.azimuths.size(), height = layout_.rings() * layout_.poses;
-  out_.print("# .PCD v0.7 - Point Cloud Data file format\n"
-             "VERSION 0.7\n"
-             "FIELDS x y z range ring object\n"
-             "SIZE 4 4 4 4 2 4\n"
-             "TYPE F F F F U I\n"
-             "COUNT 1 1 1 1 1 1\n"
-             "WIDTH %zu\n"
-             "HEIGHT %zu\n"
-             "VIEWPOINT 0 0 0 1 0 0 0\n"
-             "POINTS %zu\n"
-             "DATA %s\n",
-             width, height, width * height, data_ == PcdData::binary ? "binary" : "ascii");
+  out_.print(
+      "# .PCD v0.7 - Point Cloud Data file format\n"
+      "VERSION 0.7\n"
+      "FIELDS x y z range ring object\n"
+      "SIZE 4 4 4 4 2 4\n"
+      "TYPE F F F F U I\n"
+      "COUNT 1 1 1 1 1 1\n"
+      "WIDTH %zu\n"
+      "HEIGHT %zu\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\n"
+      "POINTS %zu\n"
+      "DATA %s\n",
+      width, height, width * height, data_ == PcdData::binary ? "binary" : "ascii");
 }
 
 void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
@@ -67,8 +70,8 @@ void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
       if (std::isinf(b.range)) {
         out_.print("%zu,%zu,%.9g,%.9g,inf,,,,\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring]);
       } else {
-        out_.print("%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring], b.range, b.x,
-                   b.y, b.z, int(b.object));
+        out_.print("%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d\n", pose, ring, layout_.azimuths[column],
+                   layout_.elevations[ring], b.range, b.x, b.y, b.z, int(b.object));
       }
     }
     return;

@@ -16,8 +16,8 @@
 namespace revolve::io {
 
 struct BeamReturn {
-  float range;        // +inf: no return (nothing hit, or the measurement outside [min, max])
-  float x, y, z;      // the return in the world frame (meaningless without one)
+  float range;          // +inf: no return (nothing hit, or the measurement outside [min, max])
+  float x, y, z;        // the return in the world frame (meaningless without one)
   std::int32_t object;  // the scene's object index (quads: objects + quad index); -1 without a return
 };
 

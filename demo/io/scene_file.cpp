@@ -40,8 +40,10 @@ Rgb rgb(const Reader& in, const Json& value, const std::string& path, double hi)
   for (std::size_t i = 0; i < 3; ++i) {
     c[i] = in.number(value[i], element(path, i));
     if (c[i] >= 0 && c[i] <= hi) continue;
-    if (hi == kReflectance) in.fail(element(path, i), numberText(value[i]) + " is out of range: a reflectance lies in [0, 1]");
-    in.fail(element(path, i), numberText(value[i]) + " is out of range: light values lie in [0, 1e18] (the renderer computes in float)");
+    if (hi == kReflectance)
+      in.fail(element(path, i), numberText(value[i]) + " is out of range: a reflectance lies in [0, 1]");
+    in.fail(element(path, i),
+            numberText(value[i]) + " is out of range: light values lie in [0, 1e18] (the renderer computes in float)");
   }
   return c;
 }
@@ -64,7 +66,8 @@ SceneCamera readCamera(const Reader& in, const Json& json) {
   }
   // Both within the coordinate limit, so the difference is exact or finite.
   const Vec3d view{camera.to[0] - camera.from[0], camera.to[1] - camera.from[1], camera.to[2] - camera.from[2]};
-  if (view[0] == 0 && view[1] == 0 && view[2] == 0) in.fail("camera.to", "equals camera.from; the camera needs a direction");
+  if (view[0] == 0 && view[1] == 0 && view[2] == 0)
+    in.fail("camera.to", "equals camera.from; the camera needs a direction");
   const Vec3d side = cross(unitVector(view), camera.up);
   if (std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]) < 1e-6) {
     in.fail("camera.up", "is parallel to the view direction (to - from)");
@@ -95,7 +98,8 @@ ProfileSource readPoints(const Reader& in, const Json& json, const std::string& 
     for (std::size_t i = 0; i < points->size(); ++i) {
       const Json& point = (*points)[i];
       if (!point.is_array() || point.size() != 2) in.fail(element(pointsPath, i), "expected a point [r, z]");
-      source.points.push_back({in.number(point[0], element(pointsPath, i) + "[0]"), in.number(point[1], element(pointsPath, i) + "[1]")});
+      source.points.push_back(
+          {in.number(point[0], element(pointsPath, i) + "[0]"), in.number(point[1], element(pointsPath, i) + "[1]")});
     }
     return source;
   }
@@ -111,7 +115,8 @@ ProfileSource readPoints(const Reader& in, const Json& json, const std::string& 
   }
   std::vector<std::size_t> lines = csvPoints.lines;
   return {std::move(csvPoints.points),
-          [file, lines](std::size_t i) { return file + ":" + std::to_string(i < lines.size() ? lines[i] : 0); }, csvPath, file};
+          [file, lines](std::size_t i) { return file + ":" + std::to_string(i < lines.size() ? lines[i] : 0); },
+          csvPath, file};
 }
 
 SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
@@ -126,7 +131,8 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
     const std::string text = in.string(*spline, child(path, "spline"));
     const std::optional<SplineKind> named = splineKindNamed(text);
     if (!named) {
-      in.fail(child(path, "spline"), "unknown spline kind " + quotedText(text) + "; expected one of: linear, quadratic, bezier, catmull-rom, natural");
+      in.fail(child(path, "spline"), "unknown spline kind " + quotedText(text) +
+                                         "; expected one of: linear, quadratic, bezier, catmull-rom, natural");
     }
     kind = *named;
   }
@@ -135,7 +141,9 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   if (const Json* value = in.optional(json, "tolerance")) {
     tolerance = in.number(*value, tolerancePath);
     if (kind == SplineKind::linear) {
-      in.fail(tolerancePath, "applies to a curved \"spline\" (quadratic, bezier, catmull-rom or natural) only; a polyline is traced as it is");
+      in.fail(tolerancePath,
+              "applies to a curved \"spline\" (quadratic, bezier, catmull-rom or natural) only; a polyline is traced "
+              "as it is");
     }
     if (!(tolerance > 0)) in.fail(tolerancePath, json::numberText(tolerance) + " is out of range: a tolerance is > 0");
   }
@@ -172,11 +180,13 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   std::optional<Profile> polyline;
   try {
     // A tolerance the user gave is held to the rule every tool applies (io/curve_polyline.h).
-    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance) : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
+    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance)
+                                   : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
   } catch (const std::invalid_argument& error) {
     in.fail(tolerance > 0 ? tolerancePath : child(path, "spline"), error.what());
   }
-  if (tolerance > 0) return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance, std::move(spline)};
+  if (tolerance > 0)
+    return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance, std::move(spline)};
   return {name, std::move(*polyline), creaseDegrees, {}, source.file, spline, 0, spline};
 }
 
@@ -193,16 +203,17 @@ SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json
     in.object(json, path, {"type", "color", "roughness"});
     material.type = MaterialType::metal;
     material.color = rgb(in, in.required(json, path, "color"), child(path, "color"), kReflectance);
-    material.roughness = in.numberIn(in.required(json, path, "roughness"), child(path, "roughness"), 0, 1,
-                                     "roughness lies in [0, 1]");
+    material.roughness =
+        in.numberIn(in.required(json, path, "roughness"), child(path, "roughness"), 0, 1, "roughness lies in [0, 1]");
   } else if (type == "glass") {
     in.object(json, path, {"type", "ior", "tint"});
     material.type = MaterialType::glass;
-    material.ior = in.numberIn(in.required(json, path, "ior"), child(path, "ior"), 1, 4,
-                               "an index of refraction lies in [1, 4]");
+    material.ior =
+        in.numberIn(in.required(json, path, "ior"), child(path, "ior"), 1, 4, "an index of refraction lies in [1, 4]");
     if (const Json* tint = in.optional(json, "tint")) material.tint = rgb(in, *tint, child(path, "tint"), kReflectance);
   } else {
-    in.fail(child(path, "type"), quotedText(type) + " is not a material type; expected one of: diffuse, metal, mirror, glass");
+    in.fail(child(path, "type"),
+            quotedText(type) + " is not a material type; expected one of: diffuse, metal, mirror, glass");
   }
   return material;
 }
@@ -220,7 +231,8 @@ std::size_t lookUp(const Reader& in, const std::vector<Named>& list, const Json&
 
 SceneTransform readTransform(const Reader& in, const Json& json, const std::string& path) {
   SceneTransform transform;
-  if (const Json* translate = in.optional(json, "translate")) transform.translate = in.position(*translate, child(path, "translate"));
+  if (const Json* translate = in.optional(json, "translate"))
+    transform.translate = in.position(*translate, child(path, "translate"));
   if (const Json* rotate = in.optional(json, "rotate")) {
     const std::string rotatePath = child(path, "rotate");
     if (!rotate->is_array() || rotate->size() != 4) in.fail(rotatePath, "expected [axis x, axis y, axis z, degrees]");
@@ -236,8 +248,9 @@ SceneTransform readTransform(const Reader& in, const Json& json, const std::stri
       const double s = in.number(value, where);
       if (!(s > 0)) in.fail(where, numberText(value) + " is not positive: scale factors must be > 0");
       if (!(s >= app::kMinScale && s <= app::kMaxScale)) {
-        in.fail(where, numberText(value) + " is out of range: scale factors lie in [2^-16, 2^40] (1.5e-05 to 1.1e12), "
-                                           "within which Embree's float instance transform keeps every ray in its range");
+        in.fail(where, numberText(value) +
+                           " is out of range: scale factors lie in [2^-16, 2^40] (1.5e-05 to 1.1e12), "
+                           "within which Embree's float instance transform keeps every ray in its range");
       }
       return s;
     };
@@ -275,7 +288,8 @@ SceneLight readLight(const Reader& in, const Json& json, const std::string& path
     light.direction = in.direction(in.required(json, path, "direction"), child(path, "direction"));
     light.irradiance = rgb(in, in.required(json, path, "irradiance"), child(path, "irradiance"), kMaxLight);
     if (const Json* angle = in.optional(json, "angle")) {
-      light.angleDegrees = in.numberIn(*angle, child(path, "angle"), 0, 45, "the sun's apparent diameter lies in [0, 45] degrees");
+      light.angleDegrees =
+          in.numberIn(*angle, child(path, "angle"), 0, 45, "the sun's apparent diameter lies in [0, 45] degrees");
     }
   } else {
     in.fail(child(path, "type"), quotedText(type) + " is not a light type; expected one of: point, sun");
@@ -322,13 +336,15 @@ Matrix3d linearPart(const SceneTransform& transform) {
 
 double worldReach(const Profile& profile, const SceneTransform& transform) {
   double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-  for (const Point2 p : profile.points()) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  for (const Point2 p : profile.points())
+    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
   const Matrix3d m = linearPart(transform);
   double reach = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
     for (int a = 0; a < 3; ++a) {
-      reach = std::max(reach, std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
+      reach = std::max(reach,
+                       std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
     }
   }
   return reach;
@@ -358,14 +374,16 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
   scene.camera = readCamera(in, in.required(root, "", "camera"));
 
   const Json& profiles = in.required(root, "", "profiles");
-  if (!profiles.is_object()) in.fail("profiles", std::string("expected an object of named profiles, found ") + profiles.type_name());
+  if (!profiles.is_object())
+    in.fail("profiles", std::string("expected an object of named profiles, found ") + profiles.type_name());
   for (const auto& [name, value] : profiles.items()) {
     checkName(in, name, child("profiles", name));
     scene.profiles.push_back(readProfile(in, name, value, child("profiles", name), directory));
   }
 
   const Json& materials = in.required(root, "", "materials");
-  if (!materials.is_object()) in.fail("materials", std::string("expected an object of named materials, found ") + materials.type_name());
+  if (!materials.is_object())
+    in.fail("materials", std::string("expected an object of named materials, found ") + materials.type_name());
   for (const auto& [name, value] : materials.items()) {
     checkName(in, name, child("materials", name));
     scene.materials.push_back(readMaterial(in, name, value, child("materials", name)));
@@ -377,17 +395,20 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     const Json& json = in.object(objects[i], path, {"profile", "material", "translate", "rotate", "scale", "name"});
     SceneObject object;
     object.profile = lookUp(in, scene.profiles, in.required(json, path, "profile"), child(path, "profile"), "profile");
-    object.material = lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
+    object.material =
+        lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
     if (const Json* name = in.optional(json, "name")) {
       object.name = in.string(*name, child(path, "name"));
       checkName(in, object.name, child(path, "name"));
     }
     object.transform = readTransform(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
-    if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform); !(reach <= app::kMaxWorldCoordinate)) {
+    if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform);
+        !(reach <= app::kMaxWorldCoordinate)) {
       char text[32];
       std::snprintf(text, sizeof text, "%.3g", reach);  // computed: three digits say it
-      in.fail(path, std::string("the placed object reaches ") + text + ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      in.fail(path, std::string("the placed object reaches ") + text +
+                        ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
     }
     scene.objects.push_back(std::move(object));
   }
@@ -399,25 +420,31 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
       const Json& json = in.object((*quads)[i], path, {"corners", "material"});
       SceneQuad quad;
       const Json& corners = in.required(json, path, "corners");
-      if (!corners.is_array() || corners.size() != 4) in.fail(child(path, "corners"), "expected 4 corners [[x, y, z], ...]");
+      if (!corners.is_array() || corners.size() != 4)
+        in.fail(child(path, "corners"), "expected 4 corners [[x, y, z], ...]");
       for (std::size_t c = 0; c < 4; ++c) quad.corners[c] = in.position(corners[c], element(child(path, "corners"), c));
       // Both triangles must have an area, or Embree would drop them silently.
       for (const auto& [a, b] : {std::pair{1, 2}, std::pair{2, 3}}) {
-        const Vec3d e1{quad.corners[a][0] - quad.corners[0][0], quad.corners[a][1] - quad.corners[0][1], quad.corners[a][2] - quad.corners[0][2]};
-        const Vec3d e2{quad.corners[b][0] - quad.corners[0][0], quad.corners[b][1] - quad.corners[0][1], quad.corners[b][2] - quad.corners[0][2]};
+        const Vec3d e1{quad.corners[a][0] - quad.corners[0][0], quad.corners[a][1] - quad.corners[0][1],
+                       quad.corners[a][2] - quad.corners[0][2]};
+        const Vec3d e2{quad.corners[b][0] - quad.corners[0][0], quad.corners[b][1] - quad.corners[0][1],
+                       quad.corners[b][2] - quad.corners[0][2]};
         const Vec3d n = cross(e1, e2);
         if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
-          in.fail(child(path, "corners"), "corners 0, " + std::to_string(a) + " and " + std::to_string(b) + " are collinear; a quad needs an area");
+          in.fail(child(path, "corners"), "corners 0, " + std::to_string(a) + " and " + std::to_string(b) +
+                                              " are collinear; a quad needs an area");
         }
       }
-      quad.material = lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
+      quad.material =
+          lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
       scene.quads.push_back(quad);
     }
   }
 
   if (const Json* lights = in.optional(root, "lights")) {
     in.array(*lights, "lights");
-    for (std::size_t i = 0; i < lights->size(); ++i) scene.lights.push_back(readLight(in, (*lights)[i], element("lights", i)));
+    for (std::size_t i = 0; i < lights->size(); ++i)
+      scene.lights.push_back(readLight(in, (*lights)[i], element("lights", i)));
   }
   if (const Json* environment = in.optional(root, "environment")) scene.environment = readEnvironment(in, *environment);
   return scene;

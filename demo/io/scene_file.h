@@ -33,7 +33,7 @@ using Rgb = std::array<double, 3>;  // linear RGB
 
 struct SceneCamera {
   Vec3d from{}, to{}, up{};
-  double fovDegrees = 0;  // vertical field of view, in (0, 180)
+  double fovDegrees = 0;                  // vertical field of view, in (0, 180)
   std::optional<int> width, height, spp;  // defaults for the renderer's options
 };
 
@@ -49,10 +49,10 @@ struct SceneProfile {
   // polyline (meshes, plots).
   Profile profile;
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
-  std::vector<std::string> warnings{};  // "where: message" for each point the Profile dropped
-  std::string csvFile{};  // the CSV it was read from, as opened; empty for inline points
+  std::vector<std::string> warnings{};                           // "where: message" for each point the Profile dropped
+  std::string csvFile{};           // the CSV it was read from, as opened; empty for inline points
   std::optional<Spline> spline{};  // a curved "spline" without a "tolerance": traced exactly
-  double tolerance = 0;          // the "tolerance" given, or 0
+  double tolerance = 0;            // the "tolerance" given, or 0
   // The curve `profile` was made from (a curved "spline", with or without a "tolerance"): tools
   // shading its polyline take the curve's own normals (ShadingNormals(profile, *curve)).
   std::optional<Spline> curve{};
@@ -63,7 +63,7 @@ enum class MaterialType { diffuse, metal, mirror, glass };
 struct SceneMaterial {
   std::string name;
   MaterialType type = MaterialType::diffuse;
-  Rgb color{1, 1, 1};   // diffuse albedo, metal and mirror reflectance; each in [0, 1]
+  Rgb color{1, 1, 1};    // diffuse albedo, metal and mirror reflectance; each in [0, 1]
   double roughness = 0;  // metal: GGX alpha = roughness^2, in [0, 1]
   double ior = 1.5;      // glass: index of refraction, in [1, 4]
   Rgb tint{1, 1, 1};     // glass: transmittance a crossing of its surface keeps, in [0, 1]
@@ -71,8 +71,8 @@ struct SceneMaterial {
 
 // Object to world: x -> translate + rotate(axis, degrees) (scale * x).
 struct SceneTransform {
-  Vec3d scale{1, 1, 1};          // each > 0
-  Vec3d rotateAxis{0, 0, 1};     // non-zero; normalised by the reader
+  Vec3d scale{1, 1, 1};       // each > 0
+  Vec3d rotateAxis{0, 0, 1};  // non-zero; normalised by the reader
   double rotateDegrees = 0;
   Vec3d translate{0, 0, 0};
 };
@@ -104,16 +104,16 @@ enum class LightType { point, sun };
 
 struct SceneLight {
   LightType type = LightType::point;
-  Vec3d position{};    // point
-  Rgb intensity{};     // point: radiant intensity, W/sr per channel
-  Vec3d direction{};   // sun: the direction the light travels (towards the ground), unit length
-  Rgb irradiance{};    // sun: irradiance on a surface facing it
+  Vec3d position{};         // point
+  Rgb intensity{};          // point: radiant intensity, W/sr per channel
+  Vec3d direction{};        // sun: the direction the light travels (towards the ground), unit length
+  Rgb irradiance{};         // sun: irradiance on a surface facing it
   double angleDegrees = 0;  // sun: apparent diameter, in [0, 45]; 0 = hard shadows
 };
 
 struct SceneEnvironment {
-  bool sky = false;      // false: uniform `color`
-  Rgb color{0, 0, 0};    // uniform radiance
+  bool sky = false;         // false: uniform `color`
+  Rgb color{0, 0, 0};       // uniform radiance
   Rgb zenith{}, horizon{};  // sky: radiance straight up and at the horizon (and below it)
 };
 

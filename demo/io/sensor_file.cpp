@@ -51,11 +51,12 @@ BeamFan readFan(const Reader& in, const Json& json, const std::string& path, int
                                           ": beams run from min_angle up to max_angle");
   }
   if (fan.maxAngle - fan.minAngle > kTurn) {
-    in.fail(child(path, "max_angle"), "the fan spans " + numberText(fan.maxAngle - fan.minAngle) +
-                                          " radians, more than a full turn (2 pi)");
+    in.fail(child(path, "max_angle"),
+            "the fan spans " + numberText(fan.maxAngle - fan.minAngle) + " radians, more than a full turn (2 pi)");
   }
   if (fan.samples == 1 && fan.minAngle != fan.maxAngle) {
-    in.fail(child(path, "max_angle"), numberText(fan.maxAngle) + " differs from min_angle = " + numberText(fan.minAngle) +
+    in.fail(child(path, "max_angle"), numberText(fan.maxAngle) +
+                                          " differs from min_angle = " + numberText(fan.minAngle) +
                                           ": with 1 sample the one beam is at min_angle = max_angle");
   }
   return fan;
@@ -97,15 +98,17 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
     if (elevations->size() > std::size_t(kMaxChannels)) {
       in.fail("elevations", std::to_string(elevations->size()) + " channels; at most " + std::to_string(kMaxChannels));
     }
-    for (std::size_t i = 0; i < elevations->size(); ++i) sensor.elevations.push_back(upward((*elevations)[i], element("elevations", i)));
+    for (std::size_t i = 0; i < elevations->size(); ++i)
+      sensor.elevations.push_back(upward((*elevations)[i], element("elevations", i)));
     sensor.planar = false;
   } else {
     sensor.elevations = {0.0};
   }
   const long beams = long(sensor.horizontal.samples) * long(sensor.elevations.size());
   if (beams > kMaxBeamsPerPose) {
-    in.fail("horizontal.samples", std::to_string(sensor.horizontal.samples) + " samples x " + std::to_string(sensor.elevations.size()) +
-                                      " channels = " + std::to_string(beams) + " beams a pose; at most " + std::to_string(kMaxBeamsPerPose));
+    in.fail("horizontal.samples",
+            std::to_string(sensor.horizontal.samples) + " samples x " + std::to_string(sensor.elevations.size()) +
+                " channels = " + std::to_string(beams) + " beams a pose; at most " + std::to_string(kMaxBeamsPerPose));
   }
 
   const Json& range = in.object(in.required(root, "", "range"), "range", {"min", "max", "resolution"});
@@ -117,7 +120,8 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
   }
   if (const Json* resolution = in.optional(range, "resolution")) {
     sensor.resolution = in.number(*resolution, "range.resolution");
-    if (!(sensor.resolution >= 0)) in.fail("range.resolution", numberText(sensor.resolution) + " is negative; 0 means none");
+    if (!(sensor.resolution >= 0))
+      in.fail("range.resolution", numberText(sensor.resolution) + " is negative; 0 means none");
   }
 
   if (const Json* noise = in.optional(root, "noise")) {

@@ -49,7 +49,7 @@ struct SensorDescription {
   std::vector<double> elevations;
   bool planar = true;  // neither `vertical` nor `elevations` given: a 2-D scanner in its XY plane
   double rangeMin = 0, rangeMax = 0;
-  double resolution = 0;  // ranges rounded to a multiple of it; 0 = not rounded
+  double resolution = 0;                  // ranges rounded to a multiple of it; 0 = not rounded
   double noiseMean = 0, noiseStddev = 0;  // Gaussian, added to returns only; stddev 0 = none
   std::uint64_t noiseSeed = 0;
 };

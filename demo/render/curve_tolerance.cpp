@@ -46,7 +46,8 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     }
     // The object's bounding sphere: the profile's box about its middle height, scaled and placed.
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-    for (const Point2& p : profile.profile.points()) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+    for (const Point2& p : profile.profile.points())
+      rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     const io::SceneTransform& t = object.transform;
     const double scale = std::max({t.scale[0], t.scale[1], t.scale[2]});
     const Vec3d middle = rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
@@ -75,7 +76,8 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
       // A number is held to the scene file's rule (io/curve_polyline.h). A footprint so wide that
       // the polyline would lie on the axis (every object made of the profile spans about a pixel)
       // would make the objects vanish: they stay exact instead.
-      polyline.emplace(choice.pixel ? Profile::fromCurve(*profile.spline, tolerance[i]) : io::curvePolyline(*profile.spline, tolerance[i]));
+      polyline.emplace(choice.pixel ? Profile::fromCurve(*profile.spline, tolerance[i])
+                                    : io::curvePolyline(*profile.spline, tolerance[i]));
     } catch (const std::invalid_argument& error) {
       throw std::runtime_error("--tolerance: profiles." + profile.name + ": " + error.what());
     }

@@ -22,7 +22,7 @@ CurveTolerance parseCurveTolerance(const std::string& text);
 
 struct CurvePolyline {
   std::string profile;
-  double tolerance;   // in the profile's units
+  double tolerance;  // in the profile's units
   std::size_t points;
 };
 
@@ -34,6 +34,7 @@ struct CurvePolyline {
 // about a pixel), stays exact. A number is held to the scene file's rule (io/curve_polyline.h):
 // std::runtime_error naming the profile when it would collapse the curve onto the axis. The
 // polylines shade with their curves' own normals (SceneProfile::curve).
-std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& tolerance, int height);
+std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& tolerance,
+                                               int height);
 
 }  // namespace revolve::render

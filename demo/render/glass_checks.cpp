@@ -30,11 +30,13 @@ std::vector<std::string> glassWarnings(const io::SceneDescription& scene) {
                               (object.name.empty() ? "" : " (\"" + object.name + "\")") + ": glass on profile \"" +
                               profile.name + "\"";
     if (!profile.profile.closed()) {
-      warnings.push_back(where + " is open (its ends neither meet nor both lie on the axis): it renders as a sheet with no "
-                                 "inside; close it to make a solid");
+      warnings.push_back(where +
+                         " is open (its ends neither meet nor both lie on the axis): it renders as a sheet with no "
+                         "inside; close it to make a solid");
     } else if (twiceSignedArea(profile.profile) < 0) {
-      warnings.push_back(where + " runs clockwise in (r, z): its normals point into the glass, which renders as a bubble of "
-                                 "air; list it from the axis at the bottom, up the outside");
+      warnings.push_back(where +
+                         " runs clockwise in (r, z): its normals point into the glass, which renders as a bubble of "
+                         "air; list it from the axis at the bottom, up the outside");
     }
   }
   return warnings;

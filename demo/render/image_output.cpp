@@ -14,10 +14,12 @@ namespace revolve::render {
 
 ImageFormat imageFormatFor(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   if (extension == ".png") return ImageFormat::png;
   if (extension == ".exr") return ImageFormat::exr;
-  throw std::runtime_error(path + ": unsupported image extension \"" + extension + "\"; use .png (8-bit sRGB) or .exr (linear half float)");
+  throw std::runtime_error(path + ": unsupported image extension \"" + extension +
+                           "\"; use .png (8-bit sRGB) or .exr (linear half float)");
 }
 
 void writeImage(io::OutputStream& out, const std::string& output, const Image& image) {

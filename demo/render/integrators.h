@@ -28,7 +28,7 @@ struct IntegratorSettings {
   // hollow glass through (five levels: four crossings of its walls and the ray beyond) with three
   // to spare for glass seen in glass or in a mirror.
   int depth = 8;
-  bool shadows = true;   // whitted: shadow rays to the lights (off: Baciu, Jia & Lam's Example 1)
+  bool shadows = true;    // whitted: shadow rays to the lights (off: Baciu, Jia & Lam's Example 1)
   int rouletteAfter = 3;  // path: Russian roulette from this many hits on
   // path: regularise glossy metal after the first diffuse or glossy bounce (Material::regularized).
   // Biased (caustics and glossy inter-reflections come out blurred); off for reference renders.

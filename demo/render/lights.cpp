@@ -66,7 +66,8 @@ LightSample Lights::sample(std::size_t index, Vec3 point, RandomStream& random) 
 
 LightSeen Lights::seen(std::size_t index, Vec3 d) const {
   const Light& light = lights_[index];
-  if (light.type != io::LightType::sun || light.solidAngle <= 0 || dot(d, light.towardsSun) < light.cosHalfAngle) return {};
+  if (light.type != io::LightType::sun || light.solidAngle <= 0 || dot(d, light.towardsSun) < light.cosHalfAngle)
+    return {};
   return {(1 / light.solidAngle) * light.power, 1 / light.solidAngle};
 }
 

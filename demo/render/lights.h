@@ -16,11 +16,11 @@
 namespace revolve::render {
 
 struct LightSample {
-  Vec3 wi{};            // unit, from the shaded point towards the light
-  Color irradiance;     // arriving along wi on a surface facing it (I / d^2, or the sun's E)
+  Vec3 wi{};         // unit, from the shaded point towards the light
+  Color irradiance;  // arriving along wi on a surface facing it (I / d^2, or the sun's E)
   bool atInfinity = false;
-  Vec3 position{};      // point lights: where the shadow ray ends
-  float pdf = 0;        // solid-angle density of wi; 0 for a delta light (a point, a sun of angle 0)
+  Vec3 position{};  // point lights: where the shadow ray ends
+  float pdf = 0;    // solid-angle density of wi; 0 for a delta light (a point, a sun of angle 0)
 };
 
 // A light seen along a direction that a BSDF sample chose: its radiance and the density with which
@@ -46,7 +46,7 @@ class Lights {
   struct Light {
     io::LightType type;
     Vec3 position{}, towardsSun{};
-    Color power;            // intensity or irradiance
+    Color power;             // intensity or irradiance
     float cosHalfAngle = 1;  // the sun's cone: directions with cos >= this
     float oneMinusCos = 0;   // 1 - cos(half angle), computed without cancellation
     float solidAngle = 0;    // Omega = 2 pi (1 - cos(half angle)); 0 for delta lights

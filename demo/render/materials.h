@@ -45,7 +45,7 @@ class Material {
   // Fresnel at normal incidence from the metal's colour; glass splits by Fresnel.
   Color specularReflectance(Vec3 wo, Vec3 shading) const;
   struct Split {
-    float reflectance;    // Fresnel: the rest is transmitted (times the tint)
+    float reflectance;              // Fresnel: the rest is transmitted (times the tint)
     std::optional<Vec3> refracted;  // none under total internal reflection
   };
   Split glassSplit(Vec3 wo, Vec3 shading, bool outside) const;

@@ -1,8 +1,8 @@
 #include "progress.h"
 
+#include <unistd.h>
 #include <cstdio>
 #include <string>
-#include <unistd.h>
 
 namespace revolve::render {
 

@@ -1,13 +1,13 @@
 #include "renderer.h"
 
-#include <tbb/task_arena.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
-#include <cmath>
 #include <thread>
 
 namespace revolve::render {
@@ -48,8 +48,10 @@ Color PixelEstimator::pixel(int x, int y, RayCounts& counts) const {
     float jx = 0.5f, jy = 0.5f;
     if (settings_.spp > 1) {
       const auto [u, v] = random.next2D();
-      if (settings_.filter == PixelFilter::tent) jx += tentOffset(u), jy += tentOffset(v);
-      else jx = u, jy = v;
+      if (settings_.filter == PixelFilter::tent)
+        jx += tentOffset(u), jy += tentOffset(v);
+      else
+        jx = u, jy = v;
     }
     sum += integrator_.radiance(camera_.ray(float(x) + jx, float(y) + jy), random, counts);
   }
@@ -86,19 +88,21 @@ RenderResult render(const io::SceneDescription& description, const scene::Embree
 
   const auto start = std::chrono::steady_clock::now();
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
-  arena.execute([&] { tbb::parallel_for(0, tiles, [&](int tile) {
-    RayCounts counts;
-    const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
-    for (int y = y0; y < std::min(y0 + kTile, settings.height); ++y) {
-      for (int x = x0; x < std::min(x0 + kTile, settings.width); ++x) {
-        const Color value = estimator.pixel(x, y, counts);
-        float* out = result.image.pixels.data() + 3 * (std::size_t(y) * settings.width + x);
-        out[0] = value.r, out[1] = value.g, out[2] = value.b;
+  arena.execute([&] {
+    tbb::parallel_for(0, tiles, [&](int tile) {
+      RayCounts counts;
+      const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+      for (int y = y0; y < std::min(y0 + kTile, settings.height); ++y) {
+        for (int x = x0; x < std::min(x0 + kTile, settings.width); ++x) {
+          const Color value = estimator.pixel(x, y, counts);
+          float* out = result.image.pixels.data() + 3 * (std::size_t(y) * settings.width + x);
+          out[0] = value.r, out[1] = value.g, out[2] = value.b;
+        }
       }
-    }
-    cameraRays += counts.camera, bounceRays += counts.bounce, shadowRays += counts.shadow;
-    ++tilesDone;
-  }); });
+      cameraRays += counts.camera, bounceRays += counts.bounce, shadowRays += counts.shadow;
+      ++tilesDone;
+    });
+  });
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (reporter.joinable()) {
     {

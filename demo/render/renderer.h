@@ -2,9 +2,9 @@
 // drawn from its own random stream, so the image depends on the seed only, not on the threads.
 #pragma once
 
-#include "scene/camera.h"
 #include "integrators.h"
 #include "io/scene_file.h"
+#include "scene/camera.h"
 #include "scene/embree_scene.h"
 
 #include <cstdint>
@@ -44,7 +44,8 @@ struct RenderResult {
 // pixel, sample). render() is this over every pixel; tests also call it for single pixels.
 class PixelEstimator {
  public:
-  PixelEstimator(const io::SceneDescription& description, const scene::EmbreeScene& scene, const RenderSettings& settings);
+  PixelEstimator(const io::SceneDescription& description, const scene::EmbreeScene& scene,
+                 const RenderSettings& settings);
   // Thread-safe; never allocates, throws or locks.
   Color pixel(int x, int y, RayCounts& counts) const;
 

@@ -12,7 +12,8 @@
 namespace revolve::robot {
 
 // A standard normal deviate for the beam.
-inline double standardNormal(std::uint64_t seed, std::uint64_t pose, std::uint64_t ring, std::uint64_t column) noexcept {
+inline double standardNormal(std::uint64_t seed, std::uint64_t pose, std::uint64_t ring,
+                             std::uint64_t column) noexcept {
   using app::mix64;
   const std::uint64_t beam = mix64(mix64(mix64(mix64(seed) ^ pose) ^ ring) ^ column);
   // u1 in (0, 1] keeps the logarithm finite; u2 in [0, 1).

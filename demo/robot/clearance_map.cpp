@@ -40,7 +40,8 @@ void noOcclusion(const RTCOccludedFunctionNArguments*) {}
 
 // Ties go to the lowest object index, so the answer does not depend on the BVH's visiting order.
 void keep(SceneClearance& best, const ObstacleClearance& found, std::int64_t object) {
-  const bool better = found.value < best.clearance || (found.value == best.clearance && best.object >= 0 && object < best.object);
+  const bool better =
+      found.value < best.clearance || (found.value == best.clearance && best.object >= 0 && object < best.object);
   if (!better) return;
   best.clearance = found.value;
   best.collides = found.value < 0;
@@ -57,12 +58,14 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
   for (const io::SceneObject& object : scene.objects) {
     if (shapeOf[object.profile] == nullptr) {
       const io::SceneProfile& profile = scene.profiles[object.profile];
-      shapes_.push_back(profile.spline ? std::make_unique<Shape>(*profile.spline) : std::make_unique<Shape>(profile.profile));
+      shapes_.push_back(profile.spline ? std::make_unique<Shape>(*profile.spline)
+                                       : std::make_unique<Shape>(profile.profile));
       shapeOf[object.profile] = shapes_.back().get();
     }
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    Obstacle obstacle{std::int64_t(i), PlacedShape(*shapeOf[scene.objects[i].profile], scene.objects[i].transform), {}, {}};
+    Obstacle obstacle{
+        std::int64_t(i), PlacedShape(*shapeOf[scene.objects[i].profile], scene.objects[i].transform), {}, {}};
     obstacle.box = obstacle.shape->worldBox();
     // The box is padded outwards, so an object reaching exactly down to the ground is not left out.
     if (obstacle.box.upper[2] <= ground) continue;
@@ -91,7 +94,8 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
   rtcAttachGeometry(scene_.get(), boxes);
   rtcReleaseGeometry(boxes);
   rtcCommitScene(scene_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error(scene.file + ": Embree failed to build the obstacles' BVH");
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE)
+    throw std::runtime_error(scene.file + ": Embree failed to build the obstacles' BVH");
 }
 
 ClearanceMap::~ClearanceMap() = default;

@@ -48,10 +48,12 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     const std::optional<scene::RangeHit> hit = scene_.nearest(ray);
     if (!hit) return;
     // t is in units of the float direction, whose length differs from 1 by its rounding.
-    const double length = std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
-                                    double(ray.direction.z) * ray.direction.z);
+    const double length =
+        std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
+                  double(ray.direction.z) * ray.direction.z);
     double range = double(hit->t) * length + sensor_.noiseMean;
-    if (sensor_.noiseStddev > 0) range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
+    if (sensor_.noiseStddev > 0)
+      range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
     if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
     if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return;  // ROS: not a return
     // The return where the measured range puts it along the beam, from the double-precision origin.
@@ -65,11 +67,12 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     const std::uint64_t firstPose = first / perPose, lastPose = (first + count - 1) / perPose;
     std::vector<SensorFrame> frames;
     for (std::uint64_t p = firstPose; p <= lastPose; ++p) frames.push_back(sensorFrame(sensor_.pose, poses[p]));
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const tbb::blocked_range<std::size_t>& range) {
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        traceBeam(first + i, frames[(first + i) / perPose - firstPose], out[i]);
-      }
-    });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                          traceBeam(first + i, frames[(first + i) / perPose - firstPose], out[i]);
+                        }
+                      });
     tracing += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // one block at a time
   };
   if (total == 0) return;
@@ -105,8 +108,12 @@ io::ScanTable Lidar::scan(std::span<const io::RobotPose> poses, int threads) con
   io::ScanTable table;
   static_cast<io::ScanLayout&>(table) = layout(poses.size());
   table.beams.resize(table.beamCount());
-  scan(poses, [&](std::uint64_t first, std::span<const io::BeamReturn> beams) { std::copy(beams.begin(), beams.end(), table.beams.begin() + first); },
-       threads);
+  scan(
+      poses,
+      [&](std::uint64_t first, std::span<const io::BeamReturn> beams) {
+        std::copy(beams.begin(), beams.end(), table.beams.begin() + first);
+      },
+      threads);
   return table;
 }
 

@@ -9,15 +9,16 @@ std::string objectName(const io::SceneDescription& description, std::size_t obje
   return "quads[" + std::to_string(object - description.objects.size()) + "]";
 }
 
-std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width, int height,
-                         int x, int y) {
+std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width,
+                         int height, int x, int y) {
   const scene::Camera camera(description.camera, width, height);
   const Ray ray = camera.ray(float(x) + 0.5f, float(y) + 0.5f);  // the pixel's centre
   const std::optional<scene::WorldHit> hit = scene.intersect(ray);
   if (!hit) return std::nullopt;
   // The camera's directions are unit length, so t is the distance (up to the float normalisation).
-  const double length = std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
-                                  double(ray.direction.z) * ray.direction.z);
+  const double length =
+      std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
+                double(ray.direction.z) * ray.direction.z);
   return Pick{hit->object, objectName(description, hit->object), hit->point, float(hit->t * length)};
 }
 

@@ -20,8 +20,8 @@ struct Pick {
 
 // The pixel (x, y), counted from the top left of a width x height view through the scene's camera
 // (0 <= x < width, 0 <= y < height). Nothing hit: nullopt.
-std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width, int height,
-                         int x, int y);
+std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width,
+                         int height, int x, int y);
 
 // The name an object index goes by in messages: the object's name, or "quads[k]".
 std::string objectName(const io::SceneDescription& description, std::size_t object);

@@ -21,7 +21,8 @@ std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
   return MeridianScale{transform.scale[0], (aboutZ || none ? 1.0 : -1.0) * transform.scale[2]};
 }
 
-PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform) : shape_(&shape), translate_(transform.translate) {
+PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform)
+    : shape_(&shape), translate_(transform.translate) {
   // The inverse of rotation * scale is scale^-1 * rotation^T.
   linear_ = io::linearPart(transform);
   const Matrix3 rotation = io::rotationOf(transform);
@@ -36,7 +37,8 @@ PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform
   // The world box of the object box [-rmax, rmax]^2 x [zmin, zmax], padded by 2^-40 of its size
   // for the rounding of the corners' transformation (a few operations, 2^-52 relative each).
   double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-  for (const Point2 p : shape.profile().points()) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  for (const Point2 p : shape.profile().points())
+    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
   box_.lower = {INFINITY, INFINITY, INFINITY};
   box_.upper = {-INFINITY, -INFINITY, -INFINITY};
   double size = 0;
@@ -79,7 +81,8 @@ std::pair<double, Vec3d> PlacedShape::distanceFrom(const Vec3d& p) const {
   const double cosPhi = rho > 0 ? local[0] / rho : 1.0, sinPhi = rho > 0 ? local[1] / rho : 0.0;
   const Vec3d surface = mapVector(linear_, {m.point.r * cosPhi, m.point.r * sinPhi, m.point.z});
   // |L v| >= (smallest scale) |v| for L = rotation * scale: a lower bound, exact for equal scales.
-  return {smallestScale_ * m.distance, {surface[0] + translate_[0], surface[1] + translate_[1], surface[2] + translate_[2]}};
+  return {smallestScale_ * m.distance,
+          {surface[0] + translate_[0], surface[1] + translate_[1], surface[2] + translate_[2]}};
 }
 
 ObstacleClearance PlacedShape::tiltedClearance(const RobotBody& robot) const {
@@ -117,7 +120,8 @@ ObstacleClearance PlacedShape::tiltedClearance(const RobotBody& robot) const {
   }
   result.value = std::max(axisBound - robot.radius, signedDistance(robot, box_));
   result.achieved = signedDistance(robot, result.point);
-  const double size = std::abs(robot.x) + std::abs(robot.y) + std::abs(robot.zMin) + std::abs(robot.zMax) + robot.radius;
+  const double size =
+      std::abs(robot.x) + std::abs(robot.y) + std::abs(robot.zMin) + std::abs(robot.zMax) + robot.radius;
   // Exact to within the search's tolerance when the surface point found attains the bound.
   result.exact = result.achieved - result.value <= tolerance + 0x1p-40 * size;
   return result;

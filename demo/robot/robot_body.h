@@ -43,11 +43,13 @@ struct Box {
 // vertical gap; overlapping, the depth min(R - h, tent in z) is greatest at the box point nearest
 // the axis and at the height nearest the robot's middle (its maxima separate).
 inline double signedDistance(const RobotBody& robot, const Box& box) {
-  const double nx = std::clamp(robot.x, box.lower[0], box.upper[0]), ny = std::clamp(robot.y, box.lower[1], box.upper[1]);
+  const double nx = std::clamp(robot.x, box.lower[0], box.upper[0]),
+               ny = std::clamp(robot.y, box.lower[1], box.upper[1]);
   const double h = std::hypot(nx - robot.x, ny - robot.y);
   const double gapZ = std::max({robot.zMin - box.upper[2], box.lower[2] - robot.zMax, 0.0});
   if (h > robot.radius || gapZ > 0) return std::hypot(std::max(h - robot.radius, 0.0), gapZ);
-  const double middle = std::clamp(0.5 * (robot.zMin + robot.zMax), std::max(box.lower[2], robot.zMin), std::min(box.upper[2], robot.zMax));
+  const double middle = std::clamp(0.5 * (robot.zMin + robot.zMax), std::max(box.lower[2], robot.zMin),
+                                   std::min(box.upper[2], robot.zMax));
   return -std::min(robot.radius - h, std::min(middle - robot.zMin, robot.zMax - middle));
 }
 

@@ -79,14 +79,17 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
       for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) {
           const double d = std::hypot(quad.corners[i][0] - quad.corners[j][0], quad.corners[i][1] - quad.corners[j][1]);
-          if (d > widest) widest = d, ends = {Point{quad.corners[i][0], quad.corners[i][1]}, Point{quad.corners[j][0], quad.corners[j][1]}};
+          if (d > widest)
+            widest = d,
+            ends = {Point{quad.corners[i][0], quad.corners[i][1]}, Point{quad.corners[j][0], quad.corners[j][1]}};
         }
       }
       walls.push_back(ends);
       continue;
     }
     Surface surface{{}, -INFINITY};
-    for (const auto& c : quad.corners) surface.outline.push_back({c[0], c[1]}), surface.top = std::max(surface.top, c[2]);
+    for (const auto& c : quad.corners)
+      surface.outline.push_back({c[0], c[1]}), surface.top = std::max(surface.top, c[2]);
     surfaces.push_back(surface);
   }
   std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) { return a.top < b.top; });
@@ -115,7 +118,8 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
       }
     }
   }
-  nlohmann::json footprint{{"surfaces", nlohmann::json::array()}, {"walls", walls}, {"objects", objects}, {"sections", sections}};
+  nlohmann::json footprint{
+      {"surfaces", nlohmann::json::array()}, {"walls", walls}, {"objects", objects}, {"sections", sections}};
   for (const Surface& surface : surfaces) footprint["surfaces"].push_back(surface.outline);
   return footprint;
 }
@@ -124,7 +128,9 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
 std::filesystem::path plotterPath() {
   std::error_code code;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", code);
-  if (code) throw std::runtime_error(std::string("cannot find this program's folder to run revolve-lidar-plot: ") + code.message());
+  if (code)
+    throw std::runtime_error(std::string("cannot find this program's folder to run revolve-lidar-plot: ") +
+                             code.message());
   return self.parent_path() / "revolve-lidar-plot";
 }
 
@@ -170,8 +176,10 @@ void runPlotter(const std::string& input, std::FILE* png, const std::string& out
 
 void checkPlotPath(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (extension != ".png") throw std::runtime_error(path + ": unsupported plot extension \"" + extension + "\"; the plot is a .png");
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension != ".png")
+    throw std::runtime_error(path + ": unsupported plot extension \"" + extension + "\"; the plot is a .png");
   const std::filesystem::path plotter = plotterPath();
   if (access(plotter.c_str(), X_OK) != 0) {
     throw std::runtime_error(path + ": cannot plot: the plotter " + plotter.string() + " is missing or not executable");
@@ -184,16 +192,18 @@ struct ScanPlot::Data {
   const io::ScanLayout& layout;
   io::ScratchFile file{".json"};
   std::FILE* out = nullptr;
-  std::int64_t pose = -1;      // the pose whose returns are being written
+  std::int64_t pose = -1;  // the pose whose returns are being written
   bool firstReturn = true;
   std::optional<std::size_t> ring;  // only this ring's returns
 
-  Data(const io::SensorDescription& s, std::span<const io::RobotPose> p, const io::ScanLayout& l) : sensor(s), poses(p), layout(l) {}
+  Data(const io::SensorDescription& s, std::span<const io::RobotPose> p, const io::ScanLayout& l)
+      : sensor(s), poses(p), layout(l) {}
   ~Data() {
     if (out != nullptr) std::fclose(out);
   }
   void check() const {
-    if (std::ferror(out)) throw std::runtime_error(file.path() + ": cannot write the plot's data: " + std::strerror(errno));
+    if (std::ferror(out))
+      throw std::runtime_error(file.path() + ": cannot write the plot's data: " + std::strerror(errno));
   }
   // Closes the returns of the pose before and opens pose `next`'s entry.
   void startPose(std::size_t next) {
@@ -201,19 +211,20 @@ struct ScanPlot::Data {
     const SensorFrame frame = sensorFrame(sensor.pose, poses[next]);
     const Vec3d heading = frame.rotate({1, 0, 0});
     const double h = std::hypot(heading[0], heading[1]);  // zero for a sensor looking straight up or down
-    std::fprintf(out, "{\"origin\": [%.17g, %.17g], \"heading\": [%.17g, %.17g], \"returns\": [", frame.origin[0], frame.origin[1],
-                 h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0);
+    std::fprintf(out, "{\"origin\": [%.17g, %.17g], \"heading\": [%.17g, %.17g], \"returns\": [", frame.origin[0],
+                 frame.origin[1], h > 0 ? heading[0] / h : 0.0, h > 0 ? heading[1] / h : 0.0);
     pose = std::int64_t(next);
     firstReturn = true;
   }
 };
 
-ScanPlot::ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor, std::span<const io::RobotPose> poses,
-                   const io::ScanLayout& layout, std::optional<std::size_t> ring)
+ScanPlot::ScanPlot(const io::SceneDescription& scene, const io::SensorDescription& sensor,
+                   std::span<const io::RobotPose> poses, const io::ScanLayout& layout, std::optional<std::size_t> ring)
     : data_(std::make_unique<Data>(sensor, poses, layout)) {
   data_->ring = ring;
   data_->out = std::fopen(data_->file.path().c_str(), "w");
-  if (data_->out == nullptr) throw std::runtime_error(data_->file.path() + ": cannot write the plot's data: " + std::strerror(errno));
+  if (data_->out == nullptr)
+    throw std::runtime_error(data_->file.path() + ": cannot write the plot's data: " + std::strerror(errno));
   const double sensorHeight = poses.empty() ? 0.0 : sensorFrame(sensor.pose, poses.front()).origin[2];
   nlohmann::json header = footprintOf(scene, sensorHeight);
   std::ostringstream title;

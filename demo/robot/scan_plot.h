@@ -14,13 +14,13 @@
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
 
-#include "io/output_set.h"
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include "io/output_set.h"
 
 namespace revolve::robot {
 

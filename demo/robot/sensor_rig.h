@@ -19,7 +19,8 @@ struct SensorFrame {
   std::array<Vec3d, 3> rows{};  // the rotation matrix, row by row
 
   Vec3d rotate(const Vec3d& v) const {
-    return {rows[0][0] * v[0] + rows[0][1] * v[1] + rows[0][2] * v[2], rows[1][0] * v[0] + rows[1][1] * v[1] + rows[1][2] * v[2],
+    return {rows[0][0] * v[0] + rows[0][1] * v[1] + rows[0][2] * v[2],
+            rows[1][0] * v[0] + rows[1][1] * v[1] + rows[1][2] * v[2],
             rows[2][0] * v[0] + rows[2][1] * v[1] + rows[2][2] * v[2]};
   }
 };
@@ -34,13 +35,16 @@ inline Vec3d beamDirection(double azimuth, double elevation) {
 // mounting position turned by Rz(yaw) Ry(pitch) Rx(roll) (ROS's fixed-axis roll, pitch, yaw).
 inline SensorFrame sensorFrame(const io::SensorPose& mount, const io::RobotPose& pose) {
   const auto rz = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{std::cos(a), -std::sin(a), 0}, Vec3d{std::sin(a), std::cos(a), 0}, Vec3d{0, 0, 1}};
+    return std::array<Vec3d, 3>{Vec3d{std::cos(a), -std::sin(a), 0}, Vec3d{std::sin(a), std::cos(a), 0},
+                                Vec3d{0, 0, 1}};
   };
   const auto ry = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{std::cos(a), 0, std::sin(a)}, Vec3d{0, 1, 0}, Vec3d{-std::sin(a), 0, std::cos(a)}};
+    return std::array<Vec3d, 3>{Vec3d{std::cos(a), 0, std::sin(a)}, Vec3d{0, 1, 0},
+                                Vec3d{-std::sin(a), 0, std::cos(a)}};
   };
   const auto rx = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{1, 0, 0}, Vec3d{0, std::cos(a), -std::sin(a)}, Vec3d{0, std::sin(a), std::cos(a)}};
+    return std::array<Vec3d, 3>{Vec3d{1, 0, 0}, Vec3d{0, std::cos(a), -std::sin(a)},
+                                Vec3d{0, std::sin(a), std::cos(a)}};
   };
   const auto multiply = [](const std::array<Vec3d, 3>& a, const std::array<Vec3d, 3>& b) {
     std::array<Vec3d, 3> c{};

@@ -81,7 +81,8 @@ bool insideAlong(const Polygon& polygon, const Vec3d& n, const Vec3d& p) {
     const Vec3d& a = polygon.v[i];
     const Vec3d& b = polygon.v[(i + 1) % polygon.n];
     const Vec3d e{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{p[0] - a[0], p[1] - a[1], p[2] - a[2]};
-    const double side = n[0] * (e[1] * w[2] - e[2] * w[1]) + n[1] * (e[2] * w[0] - e[0] * w[2]) + n[2] * (e[0] * w[1] - e[1] * w[0]);
+    const double side =
+        n[0] * (e[1] * w[2] - e[2] * w[1]) + n[1] * (e[2] * w[0] - e[0] * w[2]) + n[2] * (e[0] * w[1] - e[1] * w[0]);
     positive |= side > 0;
     negative |= side < 0;
   }
@@ -133,7 +134,8 @@ std::array<double, 2> heightsAt(const Polygon& polygon, const Vec3d& p) {
     // relative each); 2^-40 of the coordinates leaves room, and an edge farther off is elsewhere.
     const double t = ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / length2;
     const double offX = a[0] + t * ex - p[0], offY = a[1] + t * ey - p[1];
-    if (t < 0 || t > 1 || std::hypot(offX, offY) > 0x1p-40 * (std::abs(p[0]) + std::abs(p[1]) + std::sqrt(length2))) continue;
+    if (t < 0 || t > 1 || std::hypot(offX, offY) > 0x1p-40 * (std::abs(p[0]) + std::abs(p[1]) + std::sqrt(length2)))
+      continue;
     z = a[2] + t * (b[2] - a[2]);
     low = std::min(low, z);
     high = std::max(high, z);
@@ -180,7 +182,8 @@ ObstacleClearance endPart(const RobotBody& robot, const Polygon& part, bool abov
   }
   const Closest horizontal = closestToVerticalLine(part, robot.x, robot.y);
   const Closest toCentre = closestInSpace(part, {robot.x, robot.y, end});
-  result.value = std::max(std::hypot(std::max(horizontal.distance - robot.radius, 0.0), gapZ), toCentre.distance - robot.radius);
+  result.value =
+      std::max(std::hypot(std::max(horizontal.distance - robot.radius, 0.0), gapZ), toCentre.distance - robot.radius);
   consider(result, robot, horizontal.point);
   consider(result, robot, toCentre.point);
   consider(result, robot, part.v[nearestVertex]);

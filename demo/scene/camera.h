@@ -33,9 +33,12 @@ class Camera {
       up_ = cross(right_, forward_);
     } else {
       using V = io::Vec3d;
-      const auto crossed = [](V a, V b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+      const auto crossed = [](V a, V b) {
+        return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      };
       const auto toFloat = [](V v) { return Vec3{float(v[0]), float(v[1]), float(v[2])}; };
-      const V forward = unitVector({camera.to[0] - camera.from[0], camera.to[1] - camera.from[1], camera.to[2] - camera.from[2]});
+      const V forward =
+          unitVector({camera.to[0] - camera.from[0], camera.to[1] - camera.from[1], camera.to[2] - camera.from[2]});
       const V right = unitVector(crossed(forward, camera.up));
       forward_ = toFloat(forward);
       right_ = toFloat(right);

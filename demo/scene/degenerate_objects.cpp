@@ -49,13 +49,15 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
     double size = 0;
     for (int a = 0; a < 3; ++a) {
       // The box's extent along world axis a: |L_a0| + |L_a1| times 2 rmax, plus |L_a2| (zmax - zmin).
-      size = std::max(size, (std::abs(linear[a][0]) + std::abs(linear[a][1])) * 2 * rMax + std::abs(linear[a][2]) * (zHigh - zLow));
+      size = std::max(
+          size, (std::abs(linear[a][0]) + std::abs(linear[a][1])) * 2 * rMax + std::abs(linear[a][2]) * (zHigh - zLow));
     }
     const auto& t = object.transform.translate;
     const double distance = std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
     if (size <= distance * 0x1p-23) {
-      warnings.push_back(name + ": placed, it spans " + numberText(size) + ", less than one float step at its distance " +
-                         numberText(distance) + " from the origin: Embree cannot place it, and its hits are lost to rounding");
+      warnings.push_back(name + ": placed, it spans " + numberText(size) +
+                         ", less than one float step at its distance " + numberText(distance) +
+                         " from the origin: Embree cannot place it, and its hits are lost to rounding");
       continue;
     }
     if (camera && profile.closed()) {

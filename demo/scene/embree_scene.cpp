@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -44,7 +44,8 @@ struct Matrix3 {
 
 Matrix3 inverse(const Matrix3& a) {
   const auto& m = a.m;
-  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                      m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   Matrix3 r;
   r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
@@ -199,8 +200,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
         auto* counter = static_cast<MemoryCounter*>(user);
         const std::int64_t now = counter->current.fetch_add(bytes) + bytes;
         std::int64_t peak = counter->peak.load();
-        while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {
-        }
+        while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {}
         return true;
       },
       memory_.get());
@@ -225,7 +225,8 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
         which += std::string(", a curve traced as its polyline within ") + text;
       }
       which += ")";
-      if (std::optional<std::string> limitation = coneCurveLimitation(profile.profile, fromCurve ? "polyline point" : "profile point")) {
+      if (std::optional<std::string> limitation =
+              coneCurveLimitation(profile.profile, fromCurve ? "polyline point" : "profile point")) {
         throw std::runtime_error(which + " cannot be traced as Embree's linear cone curve: " + *limitation);
       }
       const io::Vec3d& scale = object.transform.scale;
@@ -251,9 +252,11 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
   }
   if (settings.mesh) {
     double triangles = 0;
-    for (const std::size_t profile : used) triangles += 2.0 * double(description.profiles[profile].profile.segmentCount()) * settings.slices;
+    for (const std::size_t profile : used)
+      triangles += 2.0 * double(description.profiles[profile].profile.segmentCount()) * settings.slices;
     app::requireMemory(triangles * app::kMeshBytesPerTriangle,
-                       "--geometry mesh with " + std::to_string(settings.slices) + " slices (" + std::to_string(std::uint64_t(triangles)) + " triangles)");
+                       "--geometry mesh with " + std::to_string(settings.slices) + " slices (" +
+                           std::to_string(std::uint64_t(triangles)) + " triangles)");
   }
   prototypes_.resize(used.size());
   tbb::parallel_for(std::size_t{0}, used.size(), [&](std::size_t i) {
@@ -274,9 +277,10 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     if (!(inv.infinityNorm() * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
         !(instance.linear.infinityNorm() <= 3 * app::kMaxScale) ||
         !(instance.linear.infinityNorm() * inv.infinityNorm() <= 3 * app::kMaxScaleRatio * (1 + 0x1p-20))) {
-      throw std::runtime_error(description.file + ": objects[" + std::to_string(i) +
-                               "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40], "
-                               "within a factor 2^16 of each other");
+      throw std::runtime_error(
+          description.file + ": objects[" + std::to_string(i) +
+          "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40], "
+          "within a factor 2^16 of each other");
     }
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) instance.normalMatrix.m[r][c] = inv.m[c][r];
@@ -301,10 +305,11 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
 
   if (!description.quads.empty()) {
     RTCGeometry triangles = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                 3 * sizeof(float), 4 * description.quads.size()));
-    auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                        3 * sizeof(std::uint32_t), 2 * description.quads.size()));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * description.quads.size()));
+    auto* indices =
+        static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                            3 * sizeof(std::uint32_t), 2 * description.quads.size()));
     for (std::size_t q = 0; q < description.quads.size(); ++q) {
       const io::SceneQuad& quad = description.quads[q];
       for (int c = 0; c < 4; ++c) {
@@ -324,7 +329,8 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     rtcReleaseGeometry(triangles);
   }
   rtcCommitScene(top_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error(description.file + ": Embree failed to build the scene");
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE)
+    throw std::runtime_error(description.file + ": Embree failed to build the scene");
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -359,7 +365,8 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
   const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-  return RangeHit{rayHit.ray.tfar, instance ? rayHit.hit.instID[0] : std::uint32_t(instances_.size() + rayHit.hit.primID / 2)};
+  return RangeHit{rayHit.ray.tfar,
+                  instance ? rayHit.hit.instID[0] : std::uint32_t(instances_.size() + rayHit.hit.primID / 2)};
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
@@ -400,7 +407,8 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
     shadingNormal = prototype.normals.normal(segment, u, v);
     const float residual = float(instance.linear.infinityNorm() * distanceToSegment(prototype.profile, segment, local));
-    const float rounding = float(gamma(3)) * app::maxComponent(app::absolute(ray.origin) + app::absolute(hit.t * ray.direction));
+    const float rounding =
+        float(gamma(3)) * app::maxComponent(app::absolute(ray.origin) + app::absolute(hit.t * ray.direction));
     hit.pointError = {residual + rounding, residual + rounding, residual + rounding};
   } else if (prototype.mesh == nullptr) {
     // Exact surface: Ng, u, v and primID in revolve's conventions (object space).
@@ -408,9 +416,11 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     hit.point = ray.origin + hit.t * ray.direction;
     objectNormal = {rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
     // A curve's geometric normal is smooth already; a polyline's is interpolated between vertices.
-    shadingNormal = prototype.shape->spline() != nullptr ? objectNormal
-                                                         : prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
-    const Vec3 magnitude = app::absolute(ray.origin) + app::absolute(instance.translate) + app::absolute(hit.t * ray.direction);
+    shadingNormal = prototype.shape->spline() != nullptr
+                        ? objectNormal
+                        : prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
+    const Vec3 magnitude =
+        app::absolute(ray.origin) + app::absolute(instance.translate) + app::absolute(hit.t * ray.direction);
     hit.transformError = instance.transformErrorFactor * app::maxComponent(magnitude);
   } else {
     // Mesh: the point from the triangle's barycentrics (pbrt-v4: within gamma(7) sum |b_i p_i|),
@@ -423,15 +433,17 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     const Vec3 p0 = vertex(0), p1 = vertex(1), p2 = vertex(2);
     const float b1 = rayHit.hit.u, b2 = rayHit.hit.v, b0 = 1 - b1 - b2;
     const Vec3 local = b0 * p0 + b1 * p1 + b2 * p2;
-    const Vec3 localError = float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
+    const Vec3 localError =
+        float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
     objectNormal = app::cross(p1 - p0, p2 - p0);  // outwards for a profile listed bottom to top, as Ng
     const std::uint32_t segment = rayHit.hit.primID / (2 * prototype.slices);
     const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
     shadingNormal = prototype.normals.normal(segment, u, v);
     // World point L p + T: its own rounding (gamma(3) (|L| |p| + |T|)) plus the object error through |L|.
     hit.point = instance.linear.apply(local) + instance.translate;
-    hit.pointError = instance.linear.applyAbsolute(localError) +
-                     float(gamma(3)) * (instance.linear.applyAbsolute(app::absolute(local)) + app::absolute(instance.translate));
+    hit.pointError =
+        instance.linear.applyAbsolute(localError) +
+        float(gamma(3)) * (instance.linear.applyAbsolute(app::absolute(local)) + app::absolute(instance.translate));
   }
   hit.geometricNormal = app::normalize(instance.normalMatrix.apply(objectNormal));
   hit.shadingNormal = app::normalize(instance.normalMatrix.apply(shadingNormal));

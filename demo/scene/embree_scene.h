@@ -1,8 +1,8 @@
 // A scene description (io/scene_file.h) built into Embree: each distinct profile once, as a
-// revolve Shape + Geometry (or a tessellated mesh, or Embree's own linear cone curve) in a scene of its own, instanced into a flat
-// top-level scene under each object's transform; quads as top-level triangles. Hits come back in
-// world space with their object's index, a smooth shading normal, and what is needed to spawn
-// secondary rays without re-hitting the surface. Shared by the applications that trace scenes.
+// revolve Shape + Geometry (or a tessellated mesh, or Embree's own linear cone curve) in a scene of its own, instanced
+// into a flat top-level scene under each object's transform; quads as top-level triangles. Hits come back in world
+// space with their object's index, a smooth shading normal, and what is needed to spawn secondary rays without
+// re-hitting the surface. Shared by the applications that trace scenes.
 //
 // Object ids: the instance of objects[i] is attached under geometry id i, so Embree's instID is the
 // scene's object index; the quads are one triangle geometry under id objects.size().
@@ -22,15 +22,15 @@
 namespace revolve::scene {
 
 struct BuildSettings {
-  bool mesh = false;            // tessellate every profile instead of tracing it exactly
+  bool mesh = false;  // tessellate every profile instead of tracing it exactly
   // Trace every profile as Embree's linear cone curve instead (ConeCurveGeometry); the scene is
   // refused, naming the first object whose profile it cannot express or that is scaled. Its kernel
   // assumes unit ray directions: rays are handed to Embree normalised (t scaled back), and an
   // instance's scale would make them other lengths again in object space.
   bool embreeCone = false;
-  std::uint32_t slices = 64;    // azimuthal steps of the mesh
-  BuildOptions options;         // the exact surfaces' search structure
-  bool countStats = false;      // MIBIT counters (slower); read with EmbreeScene::stats()
+  std::uint32_t slices = 64;  // azimuthal steps of the mesh
+  BuildOptions options;       // the exact surfaces' search structure
+  bool countStats = false;    // MIBIT counters (slower); read with EmbreeScene::stats()
 };
 
 struct WorldHit {
@@ -79,7 +79,7 @@ class EmbreeScene {
   Vec3 spawn(const WorldHit& hit, Vec3 direction) const noexcept;
 
   std::uint64_t refusedRays() const noexcept { return refused_->load(std::memory_order_relaxed); }
-  Stats stats() const noexcept;               // MIBIT counters summed over every prototype
+  Stats stats() const noexcept;  // MIBIT counters summed over every prototype
   // Search-tree nodes summed over the objects (an instanced tree counts once per object; meshes
   // and the linear scan have none): the paper's denominator for "percent of nodes traversed".
   std::size_t treeNodeCount() const noexcept;

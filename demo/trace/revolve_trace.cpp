@@ -1,6 +1,6 @@
 // revolve-trace: the nearest hit of each ray of a file with a surface of revolution, traced through
-// Embree (rtcIntersect1 on a scene holding the shape), written as CSV, and a summary line on stdout. An interface other tools
-// depend on: its options and file formats are documented in README.md and kept exact.
+// Embree (rtcIntersect1 on a scene holding the shape), written as CSV, and a summary line on stdout. An interface other
+// tools depend on: its options and file formats are documented in README.md and kept exact.
 #include "common/command_line.h"
 #include "common/counted.h"
 #include "common/embree_handles.h"
@@ -12,9 +12,9 @@
 
 #include <revolve/revolve.h>
 
-#include <CLI/CLI.hpp>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -50,11 +50,13 @@ LoadedProfile loadProfile(const Options& options) {
   const io::ProfileFile file = io::readProfileCsv(path);
   const SplineKind kind = *splineKindNamed(options.spline);
   if (options.tolerance > 0 && kind == SplineKind::linear) {
-    throw std::runtime_error("--tolerance applies to a curved --spline (quadratic, bezier, catmull-rom or natural) only");
+    throw std::runtime_error(
+        "--tolerance applies to a curved --spline (quadratic, bezier, catmull-rom or natural) only");
   }
   if (options.method == "kajiya" && kind != SplineKind::linear && !(options.tolerance > 0)) {
-    throw std::runtime_error("--method kajiya: Kajiya's strip tree bounds polylines only, and a curved --spline is traced "
-                             "exactly; use --method mibit or linear, or --tolerance to trace the curve as a polyline");
+    throw std::runtime_error(
+        "--method kajiya: Kajiya's strip tree bounds polylines only, and a curved --spline is traced "
+        "exactly; use --method mibit or linear, or --tolerance to trace the curve as a polyline");
   }
   try {
     if (kind == SplineKind::linear) {
@@ -68,7 +70,8 @@ LoadedProfile loadProfile(const Options& options) {
     double size = 0;
     for (const Point2& p : spline.bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
     // A tolerance the user gave is held to the scene file's rule (io/curve_polyline.h).
-    Profile polyline = options.tolerance > 0 ? io::curvePolyline(spline, options.tolerance) : Profile::fromCurve(spline, 1e-5 * size);
+    Profile polyline =
+        options.tolerance > 0 ? io::curvePolyline(spline, options.tolerance) : Profile::fromCurve(spline, 1e-5 * size);
     if (options.tolerance > 0) return {std::move(polyline), std::nullopt};
     return {std::move(polyline), std::move(spline)};
   } catch (const ProfileError& error) {
@@ -133,8 +136,12 @@ std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>&
 
 BuildOptions buildOptions(const Options& options) {
   BuildOptions build;
-  build.method = options.method == "linear" ? Method::linear : options.method == "kajiya" ? Method::kajiya : Method::mibit;
-  build.shell = options.shell == "cylinder" ? ShellKind::cylinder : options.shell == "cone" ? ShellKind::cone : ShellKind::hybrid;
+  build.method = options.method == "linear"   ? Method::linear
+                 : options.method == "kajiya" ? Method::kajiya
+                                              : Method::mibit;
+  build.shell = options.shell == "cylinder" ? ShellKind::cylinder
+                : options.shell == "cone"   ? ShellKind::cone
+                                            : ShellKind::hybrid;
   build.subdivisions = options.subdivisions;
   return build;
 }
@@ -168,20 +175,22 @@ void run(const Options& options) {
     rtcAttachGeometry(scene.get(), geometry->handle());
   }
   rtcCommitScene(scene.get());
-  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE) throw std::runtime_error(options.profile + ": Embree failed to build the scene");
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
+    throw std::runtime_error(options.profile + ": Embree failed to build the scene");
   const auto start = std::chrono::steady_clock::now();
   const std::vector<std::optional<Hit>> hits = traceAll(scene.get(), rays, profile, mesh, options.slices);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   io::writeHitsCsv(outputs.stream(options.out), hits);
   outputs.commit();
-  const std::size_t hitCount = std::size_t(std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
+  const std::size_t hitCount =
+      std::size_t(std::count_if(hits.begin(), hits.end(), [](const auto& hit) { return hit.has_value(); }));
   // What was traced: the curve itself (its own points), or a polyline (of the file's points, of the
   // curve within --tolerance, or, for the mesh, of the curve within 1e-5 of its size).
   const std::string method = mesh ? "mesh, " + std::to_string(options.slices) + " slices" : options.method;
   std::string traced = app::counted(profile.points().size(), "profile point") + " (" + method + ")";
   if (!mesh && loaded.curve) {
-    traced = "a " + std::string(splineKindName(loaded.curve->kind())) + " spline of " + app::counted(loaded.curve->points().size(), "point") +
-             " (" + method + ", exactly)";
+    traced = "a " + std::string(splineKindName(loaded.curve->kind())) + " spline of " +
+             app::counted(loaded.curve->points().size(), "point") + " (" + method + ", exactly)";
   } else if (options.spline != "linear") {
     traced = app::counted(profile.points().size(), "polyline point") + " (" + method + ")";
   }
@@ -195,23 +204,25 @@ void run(const Options& options) {
 
 int main(int argc, char** argv) {
   Options options;
-  CLI::App app{"Traces each ray of a CSV file against a surface of revolution through Embree and writes the "
-               "nearest hit of each."};
+  CLI::App app{
+      "Traces each ray of a CSV file against a surface of revolution through Embree and writes the "
+      "nearest hit of each."};
   app.add_option("--profile", options.profile, "profile CSV: optional header r,z; one point r,z per line")
       ->required()
       ->check(app::kNonEmpty);
   app.add_option("--rays", options.rays, "rays CSV: optional header ox,oy,oz,dx,dy,dz,tnear,tfar; one ray per line")
       ->required()
       ->check(app::kNonEmpty);
-  app.add_option("--out", options.out, "hits CSV to write: hit,t,nx,ny,nz,u,v per ray")->required()->check(app::kNonEmpty);
+  app.add_option("--out", options.out, "hits CSV to write: hit,t,nx,ny,nz,u,v per ray")
+      ->required()
+      ->check(app::kNonEmpty);
   app.add_option("--method", options.method, "intersection method")
       ->check(CLI::IsMember({"mibit", "linear", "kajiya", "mesh"}))
       ->capture_default_str();
   app.add_option("--shell", options.shell, "MIBIT bounding shells")
       ->check(CLI::IsMember({"cylinder", "cone", "hybrid"}))
       ->capture_default_str();
-  app.add_option("--subdivisions", options.subdivisions,
-                 "MIBIT leaves per monotone interval (0: one segment per leaf)")
+  app.add_option("--subdivisions", options.subdivisions, "MIBIT leaves per monotone interval (0: one segment per leaf)")
       ->check(app::wholeNumberIn<std::uint32_t>(0, UINT32_MAX))
       ->capture_default_str();
   app.add_option("--spline", options.spline,

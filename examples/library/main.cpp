@@ -37,8 +37,8 @@ int main() {
   // A closed vase, listed from the axis at the bottom up the outside and back to the axis at the
   // top, so that its normals point outwards. A Profile validates the points (ProfileError names
   // the offending point otherwise); a Shape builds the MIBIT tree over it.
-  const std::vector<revolve::Point2> points{{0, 0},      {0.5, 0},   {0.55, 0.1}, {0.8, 0.6},
-                                            {0.7, 1.2},  {0.35, 1.6}, {0.4, 1.8}, {0, 1.8}};
+  const std::vector<revolve::Point2> points{{0, 0},     {0.5, 0},    {0.55, 0.1}, {0.8, 0.6},
+                                            {0.7, 1.2}, {0.35, 1.6}, {0.4, 1.8},  {0, 1.8}};
   const revolve::Shape vase{revolve::Profile(points)};
 
   RTCDevice device = rtcNewDevice(nullptr);
@@ -85,8 +85,8 @@ int main() {
       // the instance's transform for world space (here a uniform scale: the direction is unchanged).
       const unsigned id = rh.hit.instID[0];
       const float length = std::sqrt(rh.hit.Ng_x * rh.hit.Ng_x + rh.hit.Ng_y * rh.hit.Ng_y + rh.hit.Ng_z * rh.hit.Ng_z);
-      std::printf("x = %5.2f: instance %u, t = %.6f, segment %u, u = %.4f, v = %.4f, normal (%.3f, %.3f, %.3f)\n", x, id,
-                  rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, rh.hit.Ng_x / length, rh.hit.Ng_y / length,
+      std::printf("x = %5.2f: instance %u, t = %.6f, segment %u, u = %.4f, v = %.4f, normal (%.3f, %.3f, %.3f)\n", x,
+                  id, rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, rh.hit.Ng_x / length, rh.hit.Ng_y / length,
                   rh.hit.Ng_z / length);
 
       // The same ray in the vase's space, asked of revolve directly: the same segment, and the

@@ -14,15 +14,24 @@ namespace {
 
 const char* ruleName(ProfileError::Rule rule) {
   switch (rule) {
-    case ProfileError::Rule::tooFewPoints: return "too_few_points";
-    case ProfileError::Rule::nonFinite: return "non_finite";
-    case ProfileError::Rule::negativeRadius: return "negative_radius";
-    case ProfileError::Rule::selfIntersecting: return "self_intersecting";
-    case ProfileError::Rule::tooManyPoints: return "too_many_points";
-    case ProfileError::Rule::outOfRange: return "out_of_range";
-    case ProfileError::Rule::segmentTooShort: return "segment_too_short";
-    case ProfileError::Rule::badPointCount: return "bad_point_count";
-    case ProfileError::Rule::crossesAxis: return "crosses_axis";
+    case ProfileError::Rule::tooFewPoints:
+      return "too_few_points";
+    case ProfileError::Rule::nonFinite:
+      return "non_finite";
+    case ProfileError::Rule::negativeRadius:
+      return "negative_radius";
+    case ProfileError::Rule::selfIntersecting:
+      return "self_intersecting";
+    case ProfileError::Rule::tooManyPoints:
+      return "too_many_points";
+    case ProfileError::Rule::outOfRange:
+      return "out_of_range";
+    case ProfileError::Rule::segmentTooShort:
+      return "segment_too_short";
+    case ProfileError::Rule::badPointCount:
+      return "bad_point_count";
+    case ProfileError::Rule::crossesAxis:
+      return "crosses_axis";
   }
   return "unknown";
 }

@@ -208,8 +208,7 @@ void attach(RTCDevice device, RTCScene scene, const Geometry& geometry, app::Sce
 
 void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
   std::size_t seen = first.load(std::memory_order_relaxed);
-  while (index < seen && !first.compare_exchange_weak(seen, index, std::memory_order_relaxed)) {
-  }
+  while (index < seen && !first.compare_exchange_weak(seen, index, std::memory_order_relaxed)) {}
 }
 
 }  // namespace

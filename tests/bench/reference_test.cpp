@@ -40,11 +40,11 @@ TEST(SmoothProfileTest, SignIsRightAroundCornersAndTheAxis) {
   // inside its flat top and its flat bottom, near the rim and near the axis.
   const SmoothProfile vase = vaseShape();
   const SmoothProfile::Extent e = vase.extent();
-  const Point2 top = vase.pieces().back().start;  // the rim
+  const Point2 top = vase.pieces().back().start;                              // the rim
   EXPECT_GT(vase.closest({top.r + 1e-3, top.z + 1e-3}).signedDistance, 0.0);  // beyond the rim, diagonally
   EXPECT_GT(vase.closest({top.r * 0.5, e.zHigh + 1e-3}).signedDistance, 0.0);
   EXPECT_LT(vase.closest({top.r * 0.5, e.zHigh - 1e-3}).signedDistance, 0.0);
-  EXPECT_LT(vase.closest({1e-9, 0.4}).signedDistance, 0.0);  // on the axis, mid-height: inside
+  EXPECT_LT(vase.closest({1e-9, 0.4}).signedDistance, 0.0);    // on the axis, mid-height: inside
   EXPECT_GT(vase.closest({1e-9, -1e-3}).signedDistance, 0.0);  // just below the bottom's centre
   EXPECT_LT(vase.closest({1e-9, 1e-3}).signedDistance, 0.0);
 }

@@ -30,7 +30,8 @@ void expectFinite(const json& value, const std::string& path, const std::set<std
   } else if (value.is_object()) {
     for (const auto& [key, child] : value.items()) expectFinite(child, path + "." + key, nullable);
   } else if (value.is_array()) {
-    for (std::size_t i = 0; i < value.size(); ++i) expectFinite(value[i], path + "[" + std::to_string(i) + "]", nullable);
+    for (std::size_t i = 0; i < value.size(); ++i)
+      expectFinite(value[i], path + "[" + std::to_string(i) + "]", nullable);
   }
 }
 
@@ -43,11 +44,14 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
   // Errors are absent for the analytic sphere on shapes it is not and for configurations a method
   // cannot trace (with their limitation); a matched pick is absent where no configuration of the
   // quick ladders reaches the level.
-  expectFinite(document, "", {"error_incoherent", "error_camera", "mibit", "mesh", "leanest_mibit", "leanest_mesh",
-                              "embree_cone", "embree_round_curve", "limitation"});
+  expectFinite(document, "",
+               {"error_incoherent", "error_camera", "mibit", "mesh", "leanest_mibit", "leanest_mesh", "embree_cone",
+                "embree_round_curve", "limitation"});
 
-  const std::set<std::string> timedEverywhere = {"mibit", "mesh", "sphere", "embree_cone", "embree_round_curve", "spline"};
-  const std::set<std::string> modes = {"incoherent_1", "camera_1", "camera_8", "incoherent_all", "occluded_1", "occluded_8"};
+  const std::set<std::string> timedEverywhere = {"mibit", "mesh", "sphere", "embree_cone", "embree_round_curve",
+                                                 "spline"};
+  const std::set<std::string> modes = {"incoherent_1",   "camera_1",   "camera_8",
+                                       "incoherent_all", "occluded_1", "occluded_8"};
   ASSERT_EQ(document["speed_error"].size(), 5u);
   // Embree's curves take these shapes (the cone curve: some resolutions) and refuse the others,
   // whose flat rings neither can express (see tests/embree_cone_test.cpp and bench/round_curve.h).
@@ -64,7 +68,8 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
         // Refused: a reason, and no figure that could be mistaken for a measurement.
         EXPECT_FALSE(config["limitation"].get<std::string>().empty()) << name << " " << config["label"];
         EXPECT_TRUE(speed.empty()) << name << " " << config["label"];
-        EXPECT_TRUE(config["error_incoherent"].is_null() && config["error_camera"].is_null()) << name << " " << config["label"];
+        EXPECT_TRUE(config["error_incoherent"].is_null() && config["error_camera"].is_null())
+            << name << " " << config["label"];
         continue;
       }
       ++traced[method];
@@ -74,9 +79,11 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
       }
       EXPECT_TRUE(speed.contains("incoherent_1")) << name << " " << config["label"];
       if (timedEverywhere.count(method) == 1) {
-        for (const std::string& mode : modes) EXPECT_TRUE(speed.contains(mode)) << name << " " << config["label"] << " " << mode;
+        for (const std::string& mode : modes)
+          EXPECT_TRUE(speed.contains(mode)) << name << " " << config["label"] << " " << mode;
       }
-      for (const auto& [mode, figures] : speed.items()) EXPECT_GT(figures["median"].get<double>(), 0.0) << name << " " << mode;
+      for (const auto& [mode, figures] : speed.items())
+        EXPECT_GT(figures["median"].get<double>(), 0.0) << name << " " << mode;
       if (method != "sphere" || name == "sphere") {
         for (const char* rays : {"error_incoherent", "error_camera"}) {
           ASSERT_TRUE(config[rays].is_object()) << name << " " << config["label"] << " " << rays;
@@ -88,8 +95,8 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
       EXPECT_GT(config["total_bytes"].get<double>(), 0.0);
     }
     EXPECT_EQ(methods, (std::set<std::string>{"sphere", "mibit", "mibit_binary", "mibit_cone", "mibit_hybrid", "linear",
-                                               "kajiya", "mesh", "embree_cone", "embree_round_curve", "spline", "adaptive",
-                                               "uniform", "mesh_adaptive"}))
+                                              "kajiya", "mesh", "embree_cone", "embree_round_curve", "spline",
+                                              "adaptive", "uniform", "mesh_adaptive"}))
         << name;
     EXPECT_EQ(traced["embree_cone"] > 0, coneTakes.count(name) == 1) << name;
     EXPECT_EQ(traced["embree_round_curve"] > 0, roundTakes.count(name) == 1) << name;
@@ -99,11 +106,13 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
     EXPECT_GT(shape["spline_pieces"].get<int>(), 0) << name;
     for (const json& config : shape["configs"]) {
       if (config["method"] != "spline") continue;
-      for (const char* rays : {"error_incoherent", "error_camera"}) EXPECT_LE(config[rays]["residual_max"].get<double>(), 1e-6) << name;
+      for (const char* rays : {"error_incoherent", "error_camera"})
+        EXPECT_LE(config[rays]["residual_max"].get<double>(), 1e-6) << name;
     }
     // Polyline points for one error, each sampling's count (how they compare is what the run reports).
     for (const json& row : shape["polyline_points"]) {
-      for (const char* key : {"sample_points", "adaptive_points", "uniform_points"}) EXPECT_GT(row[key].get<int>(), 1) << name;
+      for (const char* key : {"sample_points", "adaptive_points", "uniform_points"})
+        EXPECT_GT(row[key].get<int>(), 1) << name;
     }
     EXPECT_EQ(shape["matched"].size(), 24u) << name;  // four error levels in six timing modes
   }
@@ -116,15 +125,16 @@ TEST(RevolveBenchTest, QuickRunProducesEveryFigure) {
   const std::string csv = revolve::testing::readWholeFile(csvPath);
   EXPECT_EQ(csv.rfind("suite,shape,method,points,slices,mode,mrays_median", 0), 0u);
   // A refused configuration is one row with its reason, quoted (the reasons hold commas).
-  EXPECT_NE(csv.find("speed_error,goblet,embree_cone,16,0,,,,,,,,,,,,,,\"the segment from profile point"), std::string::npos);
+  EXPECT_NE(csv.find("speed_error,goblet,embree_cone,16,0,,,,,,,,,,,,,,\"the segment from profile point"),
+            std::string::npos);
   EXPECT_GT(std::count(csv.begin(), csv.end(), '\n'), 100);
 }
 
 TEST(RevolveBenchTest, QuickPaperTableProducesEveryFigure) {
   const ScratchDirectory scratch;
   const std::string jsonPath = scratch / "paper.json";
-  const auto run = runProcess(REVOLVE_BENCH_PATH, {"paper-table", "--quick", "--scene", REVOLVE_SOURCE_DIR "/scenes/patio.json",
-                                                   "--json", jsonPath});
+  const auto run = runProcess(REVOLVE_BENCH_PATH, {"paper-table", "--quick", "--scene",
+                                                   REVOLVE_SOURCE_DIR "/scenes/patio.json", "--json", jsonPath});
   ASSERT_EQ(run.status, 0) << run.err;
   const json document = json::parse(revolve::testing::readWholeFile(jsonPath));
   // The paper's own figures are null where its table (as our copy has it) has none.
@@ -140,7 +150,8 @@ TEST(RevolveBenchTest, QuickPaperTableProducesEveryFigure) {
     std::set<std::string> variants;
     for (const json& row : example["rows"]) {
       const std::string label = row["row"];
-      variants.insert(label + (row["monotone_split"].get<bool>() ? "+MI" : "") + (row["range_search"].get<bool>() ? "+RS" : ""));
+      variants.insert(label + (row["monotone_split"].get<bool>() ? "+MI" : "") +
+                      (row["range_search"].get<bool>() ? "+RS" : ""));
       for (const char* figure : {"total_seconds", "mrays_per_second", "shell_tests_millions", "quadratics_millions",
                                  "nodes_traversed_percent", "speedup_over_kj"}) {
         EXPECT_GT(row[figure].get<double>(), 0.0) << label << " " << figure;
@@ -162,11 +173,14 @@ TEST(RevolveBenchTest, PovComparisonSaysSoAndSucceedsWhenPovrayIsAbsent) {
   const std::string saved = std::getenv("PATH") != nullptr ? std::getenv("PATH") : "";
   const ScratchDirectory scratch;
   setenv("PATH", scratch.path().c_str(), 1);
-  const auto run = runProcess(REVOLVE_BENCH_PATH, {"pov", "--scene", REVOLVE_SOURCE_DIR "/scenes/patio_points.json", "--out", scratch / "out"});
+  const auto run = runProcess(
+      REVOLVE_BENCH_PATH, {"pov", "--scene", REVOLVE_SOURCE_DIR "/scenes/patio_points.json", "--out", scratch / "out"});
   const auto scaling = runProcess(REVOLVE_BENCH_PATH, {"pov-scaling", "--out", scratch / "out"});
   setenv("PATH", saved.c_str(), 1);
   EXPECT_EQ(run.status, 0) << run.err;
-  EXPECT_EQ(run.err, "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, or scripts/install-deps.sh --test)\n");
+  EXPECT_EQ(run.err,
+            "revolve-bench: skipped: povray is not installed (Debian: apt-get install povray, or "
+            "scripts/install-deps.sh --test)\n");
   EXPECT_EQ(scaling.status, 0) << scaling.err;
   EXPECT_EQ(scaling.err, run.err);
   EXPECT_TRUE(scratch.entries().empty());
@@ -177,7 +191,8 @@ TEST(RevolveBenchTest, BadCameraSizeIsAnErrorAndWritesNothing) {
   const std::string jsonPath = scratch / "bench.json";
   const auto run = runProcess(REVOLVE_BENCH_PATH, {"--quick", "--camera", "30x7", "--json", jsonPath});
   EXPECT_EQ(run.status, 1);
-  EXPECT_EQ(run.err, "revolve-bench: --camera 30x7: expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2\n");
+  EXPECT_EQ(run.err,
+            "revolve-bench: --camera 30x7: expected WIDTHxHEIGHT, width a positive multiple of 4, height of 2\n");
   EXPECT_TRUE(scratch.entries().empty());
 }
 

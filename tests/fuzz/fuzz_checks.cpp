@@ -102,33 +102,33 @@ void raysThrough(const Shape& shape, Vec3 target, float reach, std::mt19937_64& 
 void exerciseShape(const Shape& shape, const Profile& profile, std::mt19937_64& random) {
   const std::span<const Point2> points = profile.points();
   FUZZ_CHECK(shape.memoryBytes() > 0);
-    (void)shape.treeNodeCount();
-    const Bounds box = shape.bounds();
-    const float reach = 2.0f * std::max({std::abs(box.lower.x), std::abs(box.upper.x), std::abs(box.lower.z),
-                                         std::abs(box.upper.z), 1.0f});
+  (void)shape.treeNodeCount();
+  const Bounds box = shape.bounds();
+  const float reach = 2.0f * std::max({std::abs(box.lower.x), std::abs(box.upper.x), std::abs(box.lower.z),
+                                       std::abs(box.upper.z), 1.0f});
 
-    // Vertices and segment midpoints, at a random azimuth; at most 6 of each (first, last, random).
-    const std::size_t n = points.size();
-    for (int k = 0; k < 6; ++k) {
-      const std::size_t i = k == 0 ? 0 : k == 1 ? n - 1 : random() % n;
-      const double phi = std::uniform_real_distribution<double>(0.0, 2 * std::numbers::pi)(random);
-      const Point2 p = points[i];
-      const Point2 q = points[std::min(i + 1, n - 1)];
-      const Point2 m{0.5 * p.r + 0.5 * q.r, 0.5 * p.z + 0.5 * q.z};
-      for (const Point2 at : {p, m}) {
-        const Vec3 target{float(at.r * std::cos(phi)), float(at.r * std::sin(phi)), float(at.z)};
-        raysThrough(shape, target, reach, random);
-        if (std::isfinite(target.x) && std::isfinite(target.y) && std::isfinite(target.z)) {
-          const SurfacePoint closest = closestPoint(shape, target);
-          FUZZ_CHECK(closest.segment < profile.segmentCount());
-          FUZZ_CHECK(!(closest.distance < 0.0f));
-        }
+  // Vertices and segment midpoints, at a random azimuth; at most 6 of each (first, last, random).
+  const std::size_t n = points.size();
+  for (int k = 0; k < 6; ++k) {
+    const std::size_t i = k == 0 ? 0 : k == 1 ? n - 1 : random() % n;
+    const double phi = std::uniform_real_distribution<double>(0.0, 2 * std::numbers::pi)(random);
+    const Point2 p = points[i];
+    const Point2 q = points[std::min(i + 1, n - 1)];
+    const Point2 m{0.5 * p.r + 0.5 * q.r, 0.5 * p.z + 0.5 * q.z};
+    for (const Point2 at : {p, m}) {
+      const Vec3 target{float(at.r * std::cos(phi)), float(at.r * std::sin(phi)), float(at.z)};
+      raysThrough(shape, target, reach, random);
+      if (std::isfinite(target.x) && std::isfinite(target.y) && std::isfinite(target.z)) {
+        const SurfacePoint closest = closestPoint(shape, target);
+        FUZZ_CHECK(closest.segment < profile.segmentCount());
+        FUZZ_CHECK(!(closest.distance < 0.0f));
       }
-      // Across the axis in the vertex's plane, and along the axis from above and below.
-      checkRay(shape, {{-reach, 0.0f, float(p.z)}, {1.0f, 0.0f, 0.0f}}, random);
-      checkRay(shape, {{0.0f, 0.0f, box.upper.z + reach}, {0.0f, 0.0f, -1.0f}}, random);
-      checkRay(shape, {{0.0f, 0.0f, box.lower.z - reach}, {0.0f, 0.0f, 1.0f}}, random);
     }
+    // Across the axis in the vertex's plane, and along the axis from above and below.
+    checkRay(shape, {{-reach, 0.0f, float(p.z)}, {1.0f, 0.0f, 0.0f}}, random);
+    checkRay(shape, {{0.0f, 0.0f, box.upper.z + reach}, {0.0f, 0.0f, -1.0f}}, random);
+    checkRay(shape, {{0.0f, 0.0f, box.lower.z - reach}, {0.0f, 0.0f, 1.0f}}, random);
+  }
 }
 
 BuildOptions randomMibit(std::mt19937_64& random) {
@@ -153,7 +153,8 @@ void exerciseShapes(const Profile& profile, std::mt19937_64& random) {
   linear.method = Method::linear;
   BuildOptions kajiya;
   kajiya.method = Method::kajiya;
-  for (const BuildOptions& options : {randomMibit(random), linear, kajiya}) exerciseShape(Shape(profile, options), profile, random);
+  for (const BuildOptions& options : {randomMibit(random), linear, kajiya})
+    exerciseShape(Shape(profile, options), profile, random);
 
   // The tessellated baseline, while small: indices stay inside the vertex array.
   const std::uint32_t slices = 3 + static_cast<std::uint32_t>(random() % 6);

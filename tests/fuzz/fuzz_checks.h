@@ -18,8 +18,8 @@ namespace revolve::fuzz {
   std::abort();
 }
 
-#define FUZZ_CHECK(condition)                                              \
-  do {                                                                     \
+#define FUZZ_CHECK(condition)                                                \
+  do {                                                                       \
     if (!(condition)) ::revolve::fuzz::fail(#condition, __FILE__, __LINE__); \
   } while (false)
 

@@ -1,7 +1,7 @@
 // Fuzz target: a poses file (POSES.csv) as revolve-lidar and revolve-clearance read it. Expected:
 // an InputError with a one-line message, or at least one pose, every value finite, x, y and z
-// within the coordinate limit (common/ray_limits.h), z = 0 where the file gave none; the poses, written back as shortest round-trip text under the x,y,z,yaw header,
-// read back bit for bit.
+// within the coordinate limit (common/ray_limits.h), z = 0 where the file gave none; the poses, written back as
+// shortest round-trip text under the x,y,z,yaw header, read back bit for bit.
 #include "common/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/poses_file.h"
@@ -41,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<io::RobotPose> back = io::parsePosesCsv(again, "again.csv");
   FUZZ_CHECK(back.size() == poses.size());
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    FUZZ_CHECK(back[i].x == poses[i].x && back[i].y == poses[i].y && back[i].z == poses[i].z && back[i].yaw == poses[i].yaw);
+    FUZZ_CHECK(back[i].x == poses[i].x && back[i].y == poses[i].y && back[i].z == poses[i].z &&
+               back[i].yaw == poses[i].yaw);
   }
   return 0;
 }

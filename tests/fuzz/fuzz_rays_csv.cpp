@@ -25,8 +25,8 @@ using namespace revolve;
 namespace {
 
 std::array<float, 8> fieldsOf(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z,
-          ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 std::string toCsv(const std::vector<Ray>& rays) {
@@ -78,7 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     revolve::embree::RayQuery query;
     RTCRayHit rayHit = app::embreeRayHit(ray);
     query.intersect(tracedScene(), rayHit);
-    if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) FUZZ_CHECK(rayHit.ray.tfar >= ray.tnear && rayHit.ray.tfar <= ray.tfar);
+    if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+      FUZZ_CHECK(rayHit.ray.tfar >= ray.tnear && rayHit.ray.tfar <= ray.tfar);
   }
   const std::vector<Ray> again = io::parseRaysCsv(toCsv(rays), "again.csv");
   FUZZ_CHECK(again.size() == rays.size());

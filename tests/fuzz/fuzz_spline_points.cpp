@@ -39,7 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       break;
     case 1:
-      for (; at + 2 <= size; at += 2) points.push_back({data[at] / 16.0, static_cast<std::int8_t>(data[at + 1]) / 16.0});
+      for (; at + 2 <= size; at += 2)
+        points.push_back({data[at] / 16.0, static_cast<std::int8_t>(data[at + 1]) / 16.0});
       break;
     default:
       for (; at + 4 <= size; at += 4) {

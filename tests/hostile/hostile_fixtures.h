@@ -51,7 +51,9 @@ inline std::string manyPoses(int count) {
   return text;
 }
 
-inline std::size_t lineCount(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
+inline std::size_t lineCount(const std::string& text) {
+  return std::size_t(std::count(text.begin(), text.end(), '\n'));
+}
 
 inline std::string replacedIn(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);

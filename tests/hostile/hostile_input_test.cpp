@@ -21,9 +21,8 @@
 namespace revolve {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::expectRefusal;
+using ::testing::HasSubstr;
 using testing::kPlanarSensor;
 using testing::kPoleScene;
 using testing::kPoses;
@@ -34,6 +33,7 @@ using testing::readWholeFile;
 using testing::replacedIn;
 using testing::runProcess;
 using testing::ScratchDirectory;
+using ::testing::StartsWith;
 
 const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH, kTrace = REVOLVE_TRACE_PATH,
                   kClearance = REVOLVE_CLEARANCE_PATH;
@@ -54,12 +54,14 @@ TEST(EmbreeContract, FarPositionsAreRefusedByLineOrKeyPathWithTheLimit) {
   dir.write("p.csv", "r,z\n0,0\n1,0\n1,1\n0,1\n");
   dir.write("far_origin.csv", "ox,oy,oz,dx,dy,dz,tnear,tfar\n2e18,0,0.5,-1,0,0,0,inf\n");
   dir.write("far_direction.csv", "-5,0,0.5,1,0,0,0,inf\n-5,0,0.5,1e19,0,0,0,inf\n");
-  expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.csv"},
+  expectRefusal(kLidar, "revolve-lidar", dir,
+                {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.csv"},
                 "poses.csv:3: x = \"1e20\" is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
   expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "far_sensor.json", "-o", "scan.csv"},
                 "far_sensor.json: pose.position[2]: 1e+20 is beyond the coordinate limit");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "far_origin.csv", "--out", "h.csv"},
-                "far_origin.csv:2: ox = \"2e18\" is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and Embree accepts");
+                "far_origin.csv:2: ox = \"2e18\" is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and "
+                "Embree accepts");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "far_direction.csv", "--out", "h.csv"},
                 "far_direction.csv:2: dx = \"1e19\" is beyond +-2^60");
 }
@@ -85,7 +87,8 @@ TEST(EmbreeContract, RaysAtTheLimitsStayWithinEmbreesRange) {
     "range": {"min": 0.1, "max": 1e13}
   })");
   dir.write("poses.csv", "x,y,yaw\n1.09e12,0,3.141592653589793\n");
-  const ProcessResult run = runIn(dir, kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.csv"});
+  const ProcessResult run =
+      runIn(dir, kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.csv"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(run.err, "") << "no warning, and no ray refused";
   std::istringstream rows(readWholeFile(dir / "scan.csv"));
@@ -110,13 +113,15 @@ TEST(EmbreeContract, RaysAtTheLimitsStayWithinEmbreesRange) {
 // rotation puts it.
 TEST(EmbreeContract, ATinyRotationAxisTurnsTheObjectAsTheUnitAxisDoes) {
   const ScratchDirectory dir;
-  const std::string tilted = replacedIn(kPoleScene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "rotate": [0, 1, 0, 30])");
+  const std::string tilted =
+      replacedIn(kPoleScene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "rotate": [0, 1, 0, 30])");
   dir.write("unit.json", tilted);
   dir.write("tiny.json", replacedIn(tilted, "[0, 1, 0, 30]", "[0, 1e-200, 0, 30]"));
   dir.write("subnormal.json", replacedIn(tilted, "[0, 1, 0, 30]", "[0, 5e-324, 0, 30]"));
   dir.write("sensor.json", kPlanarSensor);
   for (const char* scene : {"unit", "tiny", "subnormal"}) {
-    const ProcessResult run = runIn(dir, kLidar, {std::string(scene) + ".json", "--sensor", "sensor.json", "-o", std::string(scene) + ".csv"});
+    const ProcessResult run = runIn(
+        dir, kLidar, {std::string(scene) + ".json", "--sensor", "sensor.json", "-o", std::string(scene) + ".csv"});
     ASSERT_EQ(run.status, 0) << scene << ": " << run.err;
   }
   const std::string unit = readWholeFile(dir / "unit.csv");
@@ -154,7 +159,8 @@ TEST(EmbreeContract, TinyViewUpAndSunDirectionsRenderAsUnitOnes) {
   // 2^-100 and 2^-101, written as their shortest round-trip decimals.
   std::string tiny = replacedIn(unit, R"("to": [0, 1, 1])", R"("to": [0, 7.888609052210118e-31, 1])");
   tiny = replacedIn(tiny, R"("up": [0, 0, 1])", R"("up": [0, 0, 7.888609052210118e-31])");
-  tiny = replacedIn(tiny, R"("direction": [0, 0.5, -1])", R"("direction": [0, 3.944304526105059e-31, -7.888609052210118e-31])");
+  tiny = replacedIn(tiny, R"("direction": [0, 0.5, -1])",
+                    R"("direction": [0, 3.944304526105059e-31, -7.888609052210118e-31])");
   dir.write("tiny.json", tiny);
   for (const char* scene : {"unit", "tiny"}) {
     const ProcessResult run = runIn(dir, kRender, {std::string(scene) + ".json", "-o", std::string(scene) + ".exr"});
@@ -180,7 +186,8 @@ TEST(SpecialFiles, DevicesFifosDirectoriesAndOversizedFilesAreRefusedByName) {
   dir.write("poses.csv", kPoses);
   dir.write("p.csv", "r,z\n0,0\n1,0\n1,1\n0,1\n");
   dir.write("r.csv", "-5,0,0.5,1,0,0,0,inf\n");
-  dir.write("device_profile.json", replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "/dev/zero"})"));
+  dir.write("device_profile.json",
+            replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "/dev/zero"})"));
   ASSERT_EQ(mkfifo((dir / "pipe").c_str(), 0600), 0);
   std::filesystem::create_directory(dir / "folder");
   // Sparse files (no disk used) just over each limit, and a line twice the line limit.
@@ -192,10 +199,12 @@ TEST(SpecialFiles, DevicesFifosDirectoriesAndOversizedFilesAreRefusedByName) {
   sparse("huge.csv", (off_t{1} << 28) + 1);
   dir.write("long_line.csv", std::string(8192, '1'));
 
-  expectRefusal(kRender, "revolve-render", dir, {"/dev/zero", "-o", "out.png"}, "/dev/zero: is a character device, not a regular file");
+  expectRefusal(kRender, "revolve-render", dir, {"/dev/zero", "-o", "out.png"},
+                "/dev/zero: is a character device, not a regular file");
   expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "/dev/urandom", "-o", "scan.csv"},
                 "/dev/urandom: is a character device, not a regular file");
-  expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "sensor.json", "--poses", "pipe", "-o", "scan.csv"},
+  expectRefusal(kLidar, "revolve-lidar", dir,
+                {"scene.json", "--sensor", "sensor.json", "--poses", "pipe", "-o", "scan.csv"},
                 "pipe: is a FIFO (named pipe), not a regular file");
   expectRefusal(kLidar, "revolve-lidar", dir, {"huge.json", "--sensor", "sensor.json", "-o", "scan.csv"},
                 "huge.json: its 67.1 MB is too large: a JSON file is read up to 64 MiB");
@@ -203,14 +212,16 @@ TEST(SpecialFiles, DevicesFifosDirectoriesAndOversizedFilesAreRefusedByName) {
                 "device_profile.json: profiles.pole.csv: /dev/zero: is a character device, not a regular file");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "/dev/zero", "--rays", "r.csv", "--out", "h.csv"},
                 "/dev/zero: is a character device");
-  expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "pipe", "--out", "h.csv"}, "pipe: is a FIFO");
+  expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "pipe", "--out", "h.csv"},
+                "pipe: is a FIFO");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "folder", "--out", "h.csv"},
                 "folder: is a directory, not a regular file");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "huge.csv", "--out", "h.csv"},
                 "huge.csv: its 268 MB is too large: a CSV file is read up to 256 MiB");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "long_line.csv", "--rays", "r.csv", "--out", "h.csv"},
                 "long_line.csv:1: the line is 8192 bytes long; a line of these files holds at most 4096");
-  expectRefusal(kClearance, "revolve-clearance", dir, {"scene.json", "--robot", "0.3,0,1", "--poses", "/dev/zero", "-o", "c.csv"},
+  expectRefusal(kClearance, "revolve-clearance", dir,
+                {"scene.json", "--robot", "0.3,0,1", "--poses", "/dev/zero", "-o", "c.csv"},
                 "/dev/zero: is a character device");
 }
 
@@ -225,8 +236,9 @@ TEST(Sizes, AScanBeyondWhatAFileHoldsIsRefusedBeforeTracing) {
     "horizontal": {"samples": 16384, "min_angle": -3, "max_angle": 3},
     "vertical": {"samples": 1024, "min_angle": -1, "max_angle": 1}, "range": {"min": 0.1, "max": 30}})");
   dir.write("poses.csv", testing::manyPoses(200));
-  expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd"},
-                "poses.csv: 200 poses x 16777216 beams (sensor.json) = 3355443200 beams; a scan holds at most 2^31 - 1");
+  expectRefusal(
+      kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd"},
+      "poses.csv: 200 poses x 16777216 beams (sensor.json) = 3355443200 beams; a scan holds at most 2^31 - 1");
 }
 
 TEST(Sizes, AMeshBeyondTheMachinesMemoryIsRefusedBeforeBuilding) {
@@ -251,7 +263,8 @@ TEST(Options, EmptyValuesAreErrorsNotDefaults) {
   dir.write("poses.csv", kPoses);
   dir.write("p.csv", "r,z\n0,0\n1,0\n1,1\n0,1\n");
   dir.write("r.csv", "-5,0,0.5,1,0,0,0,inf\n");
-  const std::vector<std::string> lidar{"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.csv"};
+  const std::vector<std::string> lidar{"scene.json", "--sensor", "sensor.json", "--poses",
+                                       "poses.csv",  "-o",       "scan.csv"};
   const auto with = [](std::vector<std::string> args, const std::string& option, const std::string& value) {
     const auto at = std::find(args.begin(), args.end(), option);
     if (at != args.end()) {
@@ -261,14 +274,16 @@ TEST(Options, EmptyValuesAreErrorsNotDefaults) {
     }
     return args;
   };
-  expectRefusal(kLidar, "revolve-lidar", dir, with(lidar, "-o", ""), "--output: the value is empty; a file name is needed (see --help)");
+  expectRefusal(kLidar, "revolve-lidar", dir, with(lidar, "-o", ""),
+                "--output: the value is empty; a file name is needed (see --help)");
   expectRefusal(kLidar, "revolve-lidar", dir, with(lidar, "--poses", ""), "--poses: the value is empty");
   expectRefusal(kLidar, "revolve-lidar", dir, with(lidar, "--plot", ""), "--plot: the value is empty");
   expectRefusal(kLidar, "revolve-lidar", dir, with(lidar, "--sensor", ""), "--sensor: the value is empty");
   const std::vector<std::string> clearance{"scene.json", "--robot", "0.3,0,1", "--poses", "poses.csv", "-o", "c.csv"};
   expectRefusal(kClearance, "revolve-clearance", dir, with(clearance, "-o", ""), "--output: the value is empty");
   expectRefusal(kClearance, "revolve-clearance", dir, with(clearance, "--poses", ""), "--poses: the value is empty");
-  expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "r.csv", "--out", ""}, "--out: the value is empty");
+  expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "p.csv", "--rays", "r.csv", "--out", ""},
+                "--out: the value is empty");
 }
 
 TEST(Options, ParserErrorsAreOneLineAndStatusOne) {
@@ -278,7 +293,8 @@ TEST(Options, ParserErrorsAreOneLineAndStatusOne) {
   const std::vector<std::string> lidar{"scene.json", "--sensor", "sensor.json", "-o", "scan.csv"};
   std::vector<std::string> args = lidar;
   args.insert(args.end(), {"--slices", "2"});
-  expectRefusal(kLidar, "revolve-lidar", dir, args, "--slices: 2 is out of range: it must lie in [3, 65536] (see --help)");
+  expectRefusal(kLidar, "revolve-lidar", dir, args,
+                "--slices: 2 is out of range: it must lie in [3, 65536] (see --help)");
   args = lidar;
   args.insert(args.end(), {"--threads", "1.5"});
   expectRefusal(kLidar, "revolve-lidar", dir, args, "--threads: 1.5 is not a whole number (see --help)");
@@ -286,11 +302,13 @@ TEST(Options, ParserErrorsAreOneLineAndStatusOne) {
   args.insert(args.end(), {"--bogus"});
   expectRefusal(kLidar, "revolve-lidar", dir, args, "--bogus");
   expectRefusal(kLidar, "revolve-lidar", dir, {"scene.json", "-o", "scan.csv"}, "--sensor is required (see --help)");
-  expectRefusal(kClearance, "revolve-clearance", dir, {"scene.json", "--robot", "0.3,0,1", "--poses", "p.csv", "-o", "c.csv", "--threads", "0"},
+  expectRefusal(kClearance, "revolve-clearance", dir,
+                {"scene.json", "--robot", "0.3,0,1", "--poses", "p.csv", "-o", "c.csv", "--threads", "0"},
                 "--threads: 0 is out of range: it must lie in [1, 1024]");
   args = lidar;
   args.insert(args.end(), {"--pcd-data", "binary"});
-  expectRefusal(kLidar, "revolve-lidar", dir, args, "scan.csv: --pcd-data applies to .pcd outputs, and this one is a CSV table");
+  expectRefusal(kLidar, "revolve-lidar", dir, args,
+                "scan.csv: --pcd-data applies to .pcd outputs, and this one is a CSV table");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -299,7 +317,8 @@ TEST(Options, ParserErrorsAreOneLineAndStatusOne) {
 
 TEST(Outputs, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
   const ScratchDirectory dir;
-  dir.write("scene.json", replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "pole.csv"})"));
+  dir.write("scene.json",
+            replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "pole.csv"})"));
   dir.write("pole.csv", "r,z\n0,0\n0.25,0\n0.25,2\n0,2\n");
   dir.write("sensor.json", kPlanarSensor);
   dir.write("poses.csv", kPoses);
@@ -313,46 +332,60 @@ TEST(Outputs, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
     args.push_back(output);
     return args;
   };
-  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("poses.csv"),
-                "poses.csv: -o names the same file as the poses file (--poses) (an input); an output may not overwrite an input");
-  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("poses_link.csv"), "poses_link.csv: -o names the same file as the poses file");
-  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("poses_hard.csv"), "poses_hard.csv: -o names the same file as the poses file");
-  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("./pole.csv"), "./pole.csv: -o names the same file as a profile CSV of the scene");
+  expectRefusal(
+      kLidar, "revolve-lidar", dir, lidarTo("poses.csv"),
+      "poses.csv: -o names the same file as the poses file (--poses) (an input); an output may not overwrite an input");
+  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("poses_link.csv"),
+                "poses_link.csv: -o names the same file as the poses file");
+  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("poses_hard.csv"),
+                "poses_hard.csv: -o names the same file as the poses file");
+  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("./pole.csv"),
+                "./pole.csv: -o names the same file as a profile CSV of the scene");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "pole.csv", "--rays", "r.csv", "--out", "pole.csv"},
                 "pole.csv: --out names the same file as the profile file (--profile)");
   expectRefusal(kTrace, "revolve-trace", dir, {"--profile", "pole.csv", "--rays", "r.csv", "--out", "folder/../r.csv"},
                 "--out names the same file as the rays file (--rays)");
-  expectRefusal(kClearance, "revolve-clearance", dir, {"scene.json", "--robot", "0.3,0,1", "--poses", "poses.csv", "-o", "poses_hard.csv"},
+  expectRefusal(kClearance, "revolve-clearance", dir,
+                {"scene.json", "--robot", "0.3,0,1", "--poses", "poses.csv", "-o", "poses_hard.csv"},
                 "poses_hard.csv: -o names the same file as the poses file (--poses)");
   ASSERT_EQ(mkfifo((dir / "fifo.csv").c_str(), 0600), 0);
-  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("fifo.csv"), "fifo.csv: -o names a FIFO (named pipe), not a regular file");
+  expectRefusal(kLidar, "revolve-lidar", dir, lidarTo("fifo.csv"),
+                "fifo.csv: -o names a FIFO (named pipe), not a regular file");
 }
 
 // revolve-render's refusals, in one test (each process loads OpenImageIO, half a second): the
 // issue's far camera and tiny scale, option errors, empty values, outputs that are inputs.
 TEST(Options, RevolveRenderRefusesInOneLineWithStatusOne) {
   const ScratchDirectory dir;
-  const std::string scene = replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "pole.csv"})");
+  const std::string scene =
+      replacedIn(kPoleScene, R"({"points": [[0, 0], [0.25, 0], [0.25, 2], [0, 2]]})", R"({"csv": "pole.csv"})");
   dir.write("scene.json", scene);
   dir.write("pole.csv", "r,z\n0,0\n0.25,0\n0.25,2\n0,2\n");
   dir.write("far.json", replacedIn(scene, R"("from": [-3, 0, 1])", R"("from": [1e20, 0, 1])"));
-  dir.write("tiny.json", replacedIn(scene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "scale": [1e-20, 1, 1])"));
+  dir.write("tiny.json",
+            replacedIn(scene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "scale": [1e-20, 1, 1])"));
   dir.write("old.png", "an existing image");
   const auto refused = [&](const std::vector<std::string>& args, const std::string& expected) {
     SCOPED_TRACE(args.front() + " ...");
     expectRefusal(kRender, "revolve-render", dir, args, expected);
   };
-  refused({"far.json", "-o", "old.png"}, "far.json: camera.from[0]: 1e+20 is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
-  refused({"tiny.json", "-o", "old.png"}, "tiny.json: objects[0].scale[0]: 1e-20 is out of range: scale factors lie in [2^-16, 2^40]");
-  refused({"scene.json", "-o", "old.png", "--spp", "0"}, "revolve-render: --spp: 0 is out of range: it must lie in [1, 1048576] (see --help)");
-  refused({"scene.json", "-o", "old.png", "--width", "64.0000001"}, "--width: 64.0000001 is not a whole number (see --help)");
+  refused({"far.json", "-o", "old.png"},
+          "far.json: camera.from[0]: 1e+20 is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+  refused({"tiny.json", "-o", "old.png"},
+          "tiny.json: objects[0].scale[0]: 1e-20 is out of range: scale factors lie in [2^-16, 2^40]");
+  refused({"scene.json", "-o", "old.png", "--spp", "0"},
+          "revolve-render: --spp: 0 is out of range: it must lie in [1, 1048576] (see --help)");
+  refused({"scene.json", "-o", "old.png", "--width", "64.0000001"},
+          "--width: 64.0000001 is not a whole number (see --help)");
   refused({"scene.json", "-o", ""}, "--output: the value is empty; a file name is needed (see --help)");
   refused({"scene.json", "-o", "old.png", "--stats", ""}, "--stats: the value is empty");
   refused({"scene.json", "--pick", ""}, "--pick: the value is empty");
   refused({"scene.json", "-o", "old.png", "--stats", "scene.json"},
           "scene.json: --stats names the same file as the scene file (an input); an output may not overwrite an input");
-  refused({"scene.json", "-o", "old.png", "--stats", "./pole.csv"}, "./pole.csv: --stats names the same file as a profile CSV of the scene");
-  refused({"scene.json", "-o", "old.png", "--stats", "old.png"}, "old.png: --stats names the same file as -o (old.png); each output needs a file of its own");
+  refused({"scene.json", "-o", "old.png", "--stats", "./pole.csv"},
+          "./pole.csv: --stats names the same file as a profile CSV of the scene");
+  refused({"scene.json", "-o", "old.png", "--stats", "old.png"},
+          "old.png: --stats names the same file as -o (old.png); each output needs a file of its own");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -376,11 +409,15 @@ TEST(DegenerateScenes, EachObjectThatShowsNothingIsWarnedOfOnce) {
   const ProcessResult render = runIn(dir, kRender, {"scene.json", "-o", "image.png"});
   ASSERT_EQ(render.status, 0) << render.err;
   const std::string prefix = "revolve-render: warning: scene.json: objects[";
-  EXPECT_EQ(render.err, prefix + "1] \"thread\": every point of profile \"line\" lies on the axis (r = 0): the surface has no area and "
-                                 "nothing can hit it\n" +
-                            prefix + "2] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06 from the "
-                                     "origin: Embree cannot place it, and its hits are lost to rounding\n" +
-                            prefix + "3] \"room\": the camera (camera.from) lies inside it: the view shows its inside, or nothing\n");
+  EXPECT_EQ(render.err,
+            prefix +
+                "1] \"thread\": every point of profile \"line\" lies on the axis (r = 0): the surface has no area and "
+                "nothing can hit it\n" +
+                prefix +
+                "2] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06 from the "
+                "origin: Embree cannot place it, and its hits are lost to rounding\n" +
+                prefix +
+                "3] \"room\": the camera (camera.from) lies inside it: the view shows its inside, or nothing\n");
   EXPECT_TRUE(std::filesystem::exists(dir / "image.png"));
   // The lidar has no camera: the other two, once each.
   const ProcessResult lidar = runIn(dir, kLidar, {"scene.json", "--sensor", "sensor.json", "-o", "scan.csv"});

@@ -21,7 +21,6 @@ namespace revolve {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::kPoleScene;
 using testing::kSpinningSensor;
 using testing::lineCount;
@@ -31,13 +30,15 @@ using testing::readWholeFile;
 using testing::RunningProcess;
 using testing::runProcess;
 using testing::ScratchDirectory;
+using ::testing::StartsWith;
 
 const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH, kTrace = REVOLVE_TRACE_PATH,
                   kClearance = REVOLVE_CLEARANCE_PATH;
 
 // Waits (up to 30 s) until `dir` holds a file whose name starts with `prefix` and that has at least
 // `bytes`: the tool is then writing it.
-bool waitForFile(const ScratchDirectory& dir, const std::string& prefix, std::uintmax_t bytes, RunningProcess& process) {
+bool waitForFile(const ScratchDirectory& dir, const std::string& prefix, std::uintmax_t bytes,
+                 RunningProcess& process) {
   for (int i = 0; i < 3000; ++i) {
     for (const std::string& name : dir.entries()) {
       std::error_code code;
@@ -58,8 +59,10 @@ TEST(Signals, ALidarRunStoppedWhileWritingLeavesNoTemporaryAndExits128PlusTheSig
     dir.write("poses.csv", testing::manyPoses(2000));  // 57.6 million beams: many seconds of work
     dir.write("scan.pcd", "an existing scan");
     const std::set<std::string> before = dir.entries();
-    RunningProcess lidar(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--plot", "scan.png"},
-                         ProcessOptions{dir.path().string(), {"TMPDIR=" + temporary.path().string()}, -1});
+    RunningProcess lidar(
+        kLidar,
+        {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--plot", "scan.png"},
+        ProcessOptions{dir.path().string(), {"TMPDIR=" + temporary.path().string()}, -1});
     ASSERT_TRUE(waitForFile(dir, "scan.pcd.tmp-", 1 << 20, lidar)) << "the scan never started: " << lidar.errSoFar();
     EXPECT_FALSE(temporary.entries().empty()) << "the plot's data is being written to TMPDIR";
     lidar.signal(signal);
@@ -118,13 +121,15 @@ TEST(FullDisk, AFailedWriteIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   dir.write("image.exr", "an existing image");
   dir.write("image.png", "an existing image");
   const std::set<std::string> before = dir.entries();
-  const ProcessResult lidar = runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd",
-                                                  "--pcd-data", "binary"},
-                                         ProcessOptions{dir.path().string(), {}, 1 << 20}, 60);
+  const ProcessResult lidar = runProcess(
+      kLidar,
+      {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--pcd-data", "binary"},
+      ProcessOptions{dir.path().string(), {}, 1 << 20}, 60);
   EXPECT_EQ(lidar.status, 1);
   EXPECT_EQ(lidar.err, "revolve-lidar: scan.pcd: write failed: File too large\n");
-  const ProcessResult render = runProcess(kRender, {"scene.json", "-o", "image.exr", "--width", "256", "--height", "192"},
-                                          ProcessOptions{dir.path().string(), {}, 4096}, 60);
+  const ProcessResult render =
+      runProcess(kRender, {"scene.json", "-o", "image.exr", "--width", "256", "--height", "192"},
+                 ProcessOptions{dir.path().string(), {}, 4096}, 60);
   EXPECT_EQ(render.status, 1);
   EXPECT_EQ(lineCount(render.err), 1u) << render.err;
   EXPECT_THAT(render.err, StartsWith("revolve-render: image.exr: write failed: "));
@@ -153,11 +158,13 @@ TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
       "\"$1\" scene.json --sensor sensor.json --poses poses.csv -o full/scan.pcd --pcd-data binary\n"
       "status=$?\n"
       "ls -A full; cat full/scan.pcd; exit $status\n";
-  ProcessResult run = runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kLidar},
-                                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+  ProcessResult run =
+      runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kLidar},
+                 ProcessOptions{dir.path().string(), {}, -1}, 60);
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
-    run = runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kLidar},
-                     ProcessOptions{dir.path().string(), {}, -1}, 60);
+    run =
+        runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kLidar},
+                   ProcessOptions{dir.path().string(), {}, -1}, 60);
   }
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
   EXPECT_EQ(run.status, 1);
@@ -169,8 +176,9 @@ TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
 // a private mount namespace (root, or a user namespace), holding an existing `output` and a filler
 // taking every other byte, so that the tool's first write there fails. stdout ends with a listing
 // of full/ and the output's contents after the run. nullopt where no tmpfs can be mounted.
-std::optional<ProcessResult> runOnAFullFileSystem(const ScratchDirectory& dir, const std::string& tool, const std::string& output,
-                                                 const std::vector<std::string>& args, const std::vector<std::string>& environment = {}) {
+std::optional<ProcessResult> runOnAFullFileSystem(const ScratchDirectory& dir, const std::string& tool,
+                                                  const std::string& output, const std::vector<std::string>& args,
+                                                  const std::vector<std::string>& environment = {}) {
   std::filesystem::create_directories(dir / "full");
   const std::string script =
       "mount -t tmpfs -o size=64k revolve-full full 2>/dev/null || exit 77\n"
@@ -210,31 +218,57 @@ TEST(FullDisk, EveryOutputOfEveryToolOnAFullFileSystemFailsInOneLineAndLeavesItA
   dir.write("rays.csv", "ox,oy,oz,dx,dy,dz,tnear,tfar\n-4,0,0.5,1,0,0,0,inf\n");
   dir.write("curve.csv", "r,z\n0,0\n0.5,0\n1,0.5\n0.5,1\n0,1\n");
   std::vector<FullDiskCase> cases = {
-      {kRender, "revolve-render", "image.png", {"scene.json", "-o", "full/image.png", "--width", "64", "--height", "48"}},
-      {kRender, "revolve-render", "image.exr", {"scene.json", "-o", "full/image.exr", "--width", "64", "--height", "48"}},
+      {kRender,
+       "revolve-render",
+       "image.png",
+       {"scene.json", "-o", "full/image.png", "--width", "64", "--height", "48"}},
+      {kRender,
+       "revolve-render",
+       "image.exr",
+       {"scene.json", "-o", "full/image.exr", "--width", "64", "--height", "48"}},
       {kRender, "revolve-render", "stats.json", {"scene.json", "-o", "image.png", "--stats", "full/stats.json"}},
       {kRender, "revolve-render", "scene.pov", {"scene.json", "--export-pov", "full/scene.pov"}},
       {kRender, "revolve-render", "scene.pov", {"scene.json", "--export-pov", "full/scene.pov", "-o", "image.png"}},
-      {kTrace, "revolve-trace", "hits.csv", {"--profile", "profile.csv", "--rays", "rays.csv", "--out", "full/hits.csv"}},
-      {kTrace, "revolve-trace", "hits.csv",
+      {kTrace,
+       "revolve-trace",
+       "hits.csv",
+       {"--profile", "profile.csv", "--rays", "rays.csv", "--out", "full/hits.csv"}},
+      {kTrace,
+       "revolve-trace",
+       "hits.csv",
        {"--profile", "curve.csv", "--spline", "quadratic", "--rays", "rays.csv", "--out", "full/hits.csv"}},
-      {kLidar, "revolve-lidar", "scan.csv", {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "full/scan.csv"}},
-      {kLidar, "revolve-lidar", "scan.pcd", {"scene.json", "--sensor", "sensor.json", "-o", "full/scan.pcd", "--pcd-data", "binary"}},
+      {kLidar,
+       "revolve-lidar",
+       "scan.csv",
+       {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "full/scan.csv"}},
+      {kLidar,
+       "revolve-lidar",
+       "scan.pcd",
+       {"scene.json", "--sensor", "sensor.json", "-o", "full/scan.pcd", "--pcd-data", "binary"}},
       {kLidar, "revolve-lidar", "scan.pcd", {"scene.json", "--sensor", "sensor.json", "-o", "full/scan.pcd"}},
-      {kLidar, "revolve-lidar", "plot.png", {"scene.json", "--sensor", "sensor.json", "-o", "scan.csv", "--plot", "full/plot.png"}},
-      {kClearance, "revolve-clearance", "clearance.csv",
+      {kLidar,
+       "revolve-lidar",
+       "plot.png",
+       {"scene.json", "--sensor", "sensor.json", "-o", "scan.csv", "--plot", "full/plot.png"}},
+      {kClearance,
+       "revolve-clearance",
+       "clearance.csv",
        {"scene.json", "--robot", "0.3,0,1.5", "--poses", "poses.csv", "-o", "full/clearance.csv"}},
   };
 #ifdef REVOLVE_LIDAR_BENCH_PATH
-  cases.push_back({REVOLVE_LIDAR_BENCH_PATH, "revolve-lidar-bench", "bench.json",
+  cases.push_back({REVOLVE_LIDAR_BENCH_PATH,
+                   "revolve-lidar-bench",
+                   "bench.json",
                    {"scene.json", "--poses", "poses.csv", "--out", "full/bench.json", "--repeats", "1"}});
 #endif
 #ifdef REVOLVE_BENCH_PATH
   for (const char* option : {"--json", "--csv"}) {
     const std::string output = option == std::string("--json") ? "bench.json" : "bench.csv";
-    cases.push_back({REVOLVE_BENCH_PATH, "revolve-bench", output,
-                     {"--quick", "--rays", "8", "--camera", "4x2", "--repetitions", "1", option, "full/" + output, "speed-error",
-                      "--shapes", "sphere"}});
+    cases.push_back({REVOLVE_BENCH_PATH,
+                     "revolve-bench",
+                     output,
+                     {"--quick", "--rays", "8", "--camera", "4x2", "--repetitions", "1", option, "full/" + output,
+                      "speed-error", "--shapes", "sphere"}});
   }
 #endif
   const std::set<std::string> before = dir.entries();
@@ -251,11 +285,13 @@ TEST(FullDisk, EveryOutputOfEveryToolOnAFullFileSystemFailsInOneLineAndLeavesItA
       EXPECT_THAT(run->err, ::testing::StartsWith(c.name + ": full/" + c.output + ": "));
       EXPECT_THAT(run->err, ::testing::HasSubstr("No space left on device"));
     } else if (c.name == "revolve-bench") {  // its progress goes to stderr too
-      EXPECT_THAT(run->err, ::testing::EndsWith("\n" + c.name + ": full/" + c.output + ": write failed: No space left on device\n"));
+      EXPECT_THAT(run->err, ::testing::EndsWith("\n" + c.name + ": full/" + c.output +
+                                                ": write failed: No space left on device\n"));
     } else {
       EXPECT_EQ(run->err, c.name + ": full/" + c.output + ": write failed: No space left on device\n");
     }
-    EXPECT_THAT(run->out, ::testing::EndsWith("== full/\n" + c.output + "\nan existing file")) << "only the old file, as it was";
+    EXPECT_THAT(run->out, ::testing::EndsWith("== full/\n" + c.output + "\nan existing file"))
+        << "only the old file, as it was";
     std::set<std::string> after = dir.entries();
     after.erase("full");
     EXPECT_EQ(after, before) << "an output of the same run was written elsewhere, or a temporary left";
@@ -273,11 +309,13 @@ TEST(FullDisk, APngThatDoesNotFitLeavesTheOldOneAndFailsInOneLine) {
       "\"$1\" scene.json -o small/z.png --width 200 --height 150 --spp 1 --threads 1\n"
       "status=$?\n"
       "ls -A small; cat small/z.png; exit $status\n";
-  ProcessResult run = runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kRender},
-                                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+  ProcessResult run =
+      runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kRender},
+                 ProcessOptions{dir.path().string(), {}, -1}, 60);
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
-    run = runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kRender},
-                     ProcessOptions{dir.path().string(), {}, -1}, 60);
+    run =
+        runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kRender},
+                   ProcessOptions{dir.path().string(), {}, -1}, 60);
   }
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
   EXPECT_EQ(run.status, 1);
@@ -298,12 +336,13 @@ TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
   const int poses[2] = {40, 80};
   // Under AddressSanitizer, freed blocks wait in a quarantine (they would count as growth): off.
   const char* asan = std::getenv("ASAN_OPTIONS");
-  const std::string asanOptions = "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
+  const std::string asanOptions =
+      "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
   for (int i = 0; i < 2; ++i) {
     dir.write("poses.csv", testing::manyPoses(poses[i]));
     const ProcessResult run = runProcess(REVOLVE_PEAK_MEMORY_PATH,
-                                         {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o",
-                                          "scan.pcd", "--pcd-data", "binary"},
+                                         {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses",
+                                          "poses.csv", "-o", "scan.pcd", "--pcd-data", "binary"},
                                          ProcessOptions{dir.path().string(), {asanOptions}, -1}, 60);
     ASSERT_EQ(run.status, 0) << run.err;
     peak[i] = std::stol(readWholeFile(dir / "peak.txt"));

@@ -5,10 +5,10 @@
 // Why a process of its own: at exec the kernel starts a process's peak from the memory image it
 // replaces, and a child spawned straight from a large test process would report the test's own
 // peak. Forked from this small program, the child starts from this program's.
-#include <cstdio>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <cstdio>
 
 int main(int argc, char** argv) {
   if (argc < 3) {

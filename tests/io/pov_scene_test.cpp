@@ -61,7 +61,9 @@ std::string between(const std::string& text, const std::string& start, const std
   return text.substr(a + start.size(), b - a - start.size());
 }
 
-V3 cross(const V3& a, const V3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+V3 cross(const V3& a, const V3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Rodrigues' formula: v turned by `degrees` about unit axis k.
@@ -82,7 +84,8 @@ TEST(PovSceneTest, LathePointsLandWhereRevolvesSurfaceIsAfterTheAxisSwap) {
   const std::vector<double> matrix = numbersIn(between(pov.text, "matrix <", ">"));
   ASSERT_EQ(matrix.size(), 12u);
 
-  const V3 k = {1 / std::sqrt(5.25), 2 / std::sqrt(5.25), -0.5 / std::sqrt(5.25)}, s = {0.5, 2, 1.5}, t = {1.5, -2, 0.25};
+  const V3 k = {1 / std::sqrt(5.25), 2 / std::sqrt(5.25), -0.5 / std::sqrt(5.25)}, s = {0.5, 2, 1.5},
+           t = {1.5, -2, 0.25};
   double worst = 0;
   for (int p = 0; p < 5; ++p) {
     const double r = lathe[1 + 2 * p], z = lathe[2 + 2 * p];
@@ -91,7 +94,8 @@ TEST(PovSceneTest, LathePointsLandWhereRevolvesSurfaceIsAfterTheAxisSwap) {
       // POV-Ray: the lathe's point at angle theta about y, then the matrix.
       const V3 q = {r * std::cos(theta), z, r * std::sin(theta)};
       V3 pov3;
-      for (int j = 0; j < 3; ++j) pov3[j] = q[0] * matrix[j] + q[1] * matrix[3 + j] + q[2] * matrix[6 + j] + matrix[9 + j];
+      for (int j = 0; j < 3; ++j)
+        pov3[j] = q[0] * matrix[j] + q[1] * matrix[3 + j] + q[2] * matrix[6 + j] + matrix[9 + j];
       // revolve: the surface point at azimuth theta, scaled, rotated, translated.
       const V3 local = rotated({s[0] * r * std::cos(theta), s[1] * r * std::sin(theta), s[2] * z}, k, 37);
       const V3 world = {local[0] + t[0], local[1] + t[1], local[2] + t[2]};
@@ -105,7 +109,8 @@ TEST(PovSceneTest, LathePointsLandWhereRevolvesSurfaceIsAfterTheAxisSwap) {
   const std::size_t second = pov.text.find("objects[1]");
   ASSERT_NE(second, std::string::npos);
   const std::size_t line = pov.text.rfind("matrix <", second);
-  EXPECT_EQ(numbersIn(between(pov.text, "matrix <", ">", line)), (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}));
+  EXPECT_EQ(numbersIn(between(pov.text, "matrix <", ">", line)),
+            (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}));
 }
 
 // A spline traced exactly is exported as the same curve: POV-Ray's bezier_spline, four control
@@ -125,7 +130,8 @@ TEST(PovSceneTest, ASplineIsWrittenAsTheSameCurveInBezierPieces) {
     for (int c = 0; c < 2; ++c) {  // r, then z
       const double p0 = q[piece][0][c], p1 = q[piece][1][c], p2 = q[piece][2][c];
       const double expected[4] = {p0, p0 + 2.0 / 3 * (p1 - p0), p2 + 2.0 / 3 * (p1 - p2), p2};
-      for (int k = 0; k < 4; ++k) EXPECT_NEAR(lathe[1 + 2 * (4 * piece + k) + c], expected[k], 1e-15) << piece << " " << k << " " << c;
+      for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(lathe[1 + 2 * (4 * piece + k) + c], expected[k], 1e-15) << piece << " " << k << " " << c;
     }
   }
 }
@@ -170,7 +176,8 @@ TEST(PovSceneTest, CameraAndLightsAreInPovRaysAxesAndLightUnits) {
   const std::vector<double> sunColour = numbersIn(between(sun, "rgb <", ">"));
   ASSERT_EQ(from.size(), 3u);
   const V3 towardsSun = {-0.3, 1, -0.4};  // -direction, in POV-Ray's axes
-  const double n = std::sqrt(dot(towardsSun, towardsSun)), length = std::sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
+  const double n = std::sqrt(dot(towardsSun, towardsSun)),
+               length = std::sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
   for (int j = 0; j < 3; ++j) EXPECT_NEAR(from[j] / length, towardsSun[j] / n, 1e-12);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(sunColour[c], (c + 1) / std::numbers::pi, 1e-15);
   // The uniform environment is both the background and the ambient light.
@@ -193,7 +200,8 @@ TEST(PovSceneTest, WhatDoesNotMapIsWrittenAsTheNearestAndNamed) {
     text.replace(at, from.size(), to);
   };
   replace(R"("irradiance": [1, 2, 3])", R"("irradiance": [1, 2, 3], "angle": 2)");
-  replace(R"({"type": "mirror", "color": [0.9, 0.9, 0.9]})", R"({"type": "metal", "color": [0.9, 0.9, 0.9], "roughness": 0.3})");
+  replace(R"({"type": "mirror", "color": [0.9, 0.9, 0.9]})",
+          R"({"type": "metal", "color": [0.9, 0.9, 0.9], "roughness": 0.3})");
   replace(R"({"color": [0.2, 0.25, 0.3]})", R"({"sky": {"zenith": [0, 0, 1], "horizon": [1, 1, 1]}})");
   const PovScene pov = povScene(parseScene(text, "scene.json", "."), {});
   ASSERT_EQ(pov.warnings.size(), 3u);
@@ -211,10 +219,15 @@ std::string sceneWithPoints(std::size_t points) {
   for (std::size_t i = 0; i < points; ++i) {
     // A wavy wall, strictly rising: a valid profile of any length.
     if (i > 0) list += ",";
-    list.append("[").append(std::to_string(1 + 0.1 * std::sin(0.01 * double(i)))).append(",").append(std::to_string(i)).append("]");
+    list.append("[")
+        .append(std::to_string(1 + 0.1 * std::sin(0.01 * double(i))))
+        .append(",")
+        .append(std::to_string(i))
+        .append("]");
   }
   return R"({"camera": {"from": [0, -9, 1], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 40},
-    "profiles": {"big": {"points": [)" + list + R"(]}},
+    "profiles": {"big": {"points": [)" +
+         list + R"(]}},
     "materials": {"white": {"type": "diffuse", "color": [0.8, 0.8, 0.8]}},
     "objects": [{"profile": "big", "material": "white"}]})";
 }
@@ -230,7 +243,8 @@ TEST(PovSceneTest, LathesBeyondPovRaysLimitAreRefusedAndNothingIsWritten) {
     ADD_FAILURE() << "a 32,768-point lathe was written";
   } catch (const SceneError& error) {
     EXPECT_EQ(std::string(error.what()),
-              "scene.json: profiles.big: 32768 points: a POV-Ray lathe holds at most 32767 (its point count is a 16-bit integer)");
+              "scene.json: profiles.big: 32768 points: a POV-Ray lathe holds at most 32767 (its point count is a "
+              "16-bit integer)");
   }
   EXPECT_TRUE(dir.entries().empty());
 }

@@ -41,8 +41,8 @@ namespace {
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 using namespace std::string_literals;
-using testing::ScratchDirectory;
 using testing::readWholeFile;
+using testing::ScratchDirectory;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -85,8 +85,13 @@ std::vector<HitLine> readHits(const std::string& path) {
       EXPECT_EQ(line, "0,inf,0,0,0,0,0");
     } else {
       EXPECT_EQ(fields[0], "1") << line;
-      hit = {true, toDouble(fields[1]), toDouble(fields[2]), toDouble(fields[3]),
-             toDouble(fields[4]), toDouble(fields[5]), toDouble(fields[6])};
+      hit = {true,
+             toDouble(fields[1]),
+             toDouble(fields[2]),
+             toDouble(fields[3]),
+             toDouble(fields[4]),
+             toDouble(fields[5]),
+             toDouble(fields[6])};
     }
     hits.push_back(hit);
   }
@@ -170,12 +175,12 @@ const std::vector<Case> kCylinderCases = {
     {"0,0,10,0,0,-1,0,inf", true, 8, 0, 0, 1, 0.0, 1.0},
     // The first ray again with limits. Its hits are t = 4 (entry) and t = 6 (exit at (1, 0, 1),
     // normal +x, u = 0, v = 0.5).
-    {"-5,0,1,1,0,0,0,3.9", false, 0, 0, 0, 0, 0, 0},             // both hits beyond tfar
-    {"-5,0,1,1,0,0,0,4", true, 4, -1, 0, 0, 0.5, 0.5, true},     // tfar is inclusive
-    {"-5,0,1,1,0,0,4,4", true, 4, -1, 0, 0, 0.5, 0.5, true},     // so is tnear: [4, 4] holds t = 4
-    {"-5,0,1,1,0,0,4.5,inf", true, 6, 1, 0, 0, 0.0, 0.5},        // the entry is before tnear
-    {"-5,0,1,1,0,0,4.5,5.9", false, 0, 0, 0, 0, 0, 0},           // neither hit inside [4.5, 5.9]
-    {"-5,0,1,1,0,0,6.5,inf", false, 0, 0, 0, 0, 0, 0},           // both hits before tnear
+    {"-5,0,1,1,0,0,0,3.9", false, 0, 0, 0, 0, 0, 0},          // both hits beyond tfar
+    {"-5,0,1,1,0,0,0,4", true, 4, -1, 0, 0, 0.5, 0.5, true},  // tfar is inclusive
+    {"-5,0,1,1,0,0,4,4", true, 4, -1, 0, 0, 0.5, 0.5, true},  // so is tnear: [4, 4] holds t = 4
+    {"-5,0,1,1,0,0,4.5,inf", true, 6, 1, 0, 0, 0.0, 0.5},     // the entry is before tnear
+    {"-5,0,1,1,0,0,4.5,5.9", false, 0, 0, 0, 0, 0, 0},        // neither hit inside [4.5, 5.9]
+    {"-5,0,1,1,0,0,6.5,inf", false, 0, 0, 0, 0, 0, 0},        // both hits before tnear
 };
 
 std::string casesCsv() {
@@ -323,8 +328,8 @@ bool robust(std::span<const Point2> profile, const reference::RefRay& ray,
   px /= pn, py /= pn, pz /= pn;
   const long double qx = (ray.dy * pz - ray.dz * py) / length, qy = (ray.dz * px - ray.dx * pz) / length,
                     qz = (ray.dx * py - ray.dy * px) / length;
-  for (const auto& [sx, sy, sz] : {std::tuple{px, py, pz}, std::tuple{-px, -py, -pz}, std::tuple{qx, qy, qz},
-                                   std::tuple{-qx, -qy, -qz}}) {
+  for (const auto& [sx, sy, sz] :
+       {std::tuple{px, py, pz}, std::tuple{-px, -py, -pz}, std::tuple{qx, qy, qz}, std::tuple{-qx, -qy, -qz}}) {
     reference::RefRay moved = ray;
     moved.ox += kDelta * sx, moved.oy += kDelta * sy, moved.oz += kDelta * sz;
     const std::optional<reference::RefHit> other = reference::intersectProfile(profile, moved);
@@ -384,8 +389,8 @@ TEST_F(TraceCliTest, RandomRaysMatchTheOracleLineByLine) {
     std::vector<bool> isRobust;
     std::size_t robustCount = 0, robustHits = 0;
     for (const Ray& r : rays) {
-      const reference::RefRay ray{r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z,
-                                  r.tnear, r.tfar};
+      const reference::RefRay ray{r.origin.x,    r.origin.y,    r.origin.z, r.direction.x,
+                                  r.direction.y, r.direction.z, r.tnear,    r.tfar};
       expected.push_back(reference::intersectProfile(vase, ray));
       isRobust.push_back(robust(vase, ray, expected.back()));
       robustCount += isRobust.back();
@@ -431,8 +436,8 @@ TEST_F(TraceCliTest, RandomRaysMatchTheOracleLineByLine) {
         EXPECT_NEAR(hit.nx, double(want->nx), 1e-4) << "ray " << i;
         EXPECT_NEAR(hit.ny, double(want->ny), 1e-4) << "ray " << i;
         EXPECT_NEAR(hit.nz, double(want->nz), 1e-4) << "ray " << i;
-        const reference::RefRay ray{r.origin.x, r.origin.y, r.origin.z, r.direction.x, r.direction.y, r.direction.z,
-                                    r.tnear, r.tfar};
+        const reference::RefRay ray{r.origin.x,    r.origin.y,    r.origin.z, r.direction.x,
+                                    r.direction.y, r.direction.z, r.tnear,    r.tfar};
         const auto [u, v] = expectedUv(vase, ray, *want);
         EXPECT_LT(uDistance(hit.u, u), 1e-4) << "ray " << i << ": u = " << hit.u << ", expected " << u;
         EXPECT_NEAR(hit.v, v, 1e-4) << "ray " << i;
@@ -501,7 +506,8 @@ TEST_F(TraceCliTest, SplinesAreTracedExactlyOrWithinTheirTolerance) {
   }
   directory.write("r.csv", rays);
   for (const double tolerance : {0.0, 1e-3}) {
-    std::vector<std::string> args{"--profile", profilePath(), "--rays", raysPath(), "--out", outPath(), "--spline", "bezier"};
+    std::vector<std::string> args{"--profile", profilePath(), "--rays",   raysPath(),
+                                  "--out",     outPath(),     "--spline", "bezier"};
     if (tolerance > 0) args.insert(args.end(), {"--tolerance", "0.001"});
     const Result result = runTrace(args);
     ASSERT_EQ(result.status, 0) << result.err;
@@ -529,7 +535,9 @@ TEST_F(TraceCliTest, SplinesAreTracedExactlyOrWithinTheirTolerance) {
 // ---------------------------------------------------------------------------------------------
 // Bad input: non-zero status, one line naming file, line and problem, no output file.
 
-constexpr const char* kAbsent = "\x01" "absent";  // a file the case does not create
+constexpr const char* kAbsent =
+    "\x01"
+    "absent";  // a file the case does not create
 constexpr const char* kGoodRays = "-5,0,1,1,0,0,0,inf\n";
 
 struct BadInput {
@@ -541,8 +549,8 @@ struct BadInput {
   std::vector<std::string> args = {};
   // Substrings of stderr, "@" as above.
   std::vector<std::string> message = {};
-  bool usageError = false;        // an option error, which points to --help
-  bool outputCanExist = true;     // whether a pre-existing output file can be set up
+  bool usageError = false;     // an option error, which points to --help
+  bool outputCanExist = true;  // whether a pre-existing output file can be set up
   bool replaceFiles = false;
 };
 
@@ -565,7 +573,9 @@ const std::vector<BadInput> kBadInputs = {
      .args = {"--profile", "@/r.csv/p.csv", "--rays", "@/r.csv", "--out", "@/h.csv"},
      .message = {"@/r.csv/p.csv: ", "Not a directory"},
      .replaceFiles = true},
-    {.name = "GarbageProfile", .profile = "\x7f" "ELF\x02\x01\x01\0\0\0,\x03\n\xff\xfe"s,
+    {.name = "GarbageProfile",
+     .profile = "\x7f"
+                "ELF\x02\x01\x01\0\0\0,\x03\n\xff\xfe"s,
      .message = {"@/p.csv:1: ", "header"}},
     {.name = "GarbageRays", .rays = "PK\x03\x04\x14\0\x08\0\x08\0\n"s, .message = {"@/r.csv:1: ", "header"}},
     {.name = "SelfIntersectingProfile", .profile = kSelfIntersecting, .message = {"@/p.csv:4: ", "intersect"}},
@@ -578,10 +588,12 @@ const std::vector<BadInput> kBadInputs = {
     {.name = "SinglePointProfile", .profile = "r,z\n1,1\n", .message = {"@/p.csv:2: ", "at least 2"}},
     {.name = "ProfileWithoutPoints", .profile = "r,z\n\n", .message = {"@/p.csv: ", "no profile points"}},
     {.name = "EmptyProfile", .profile = "", .message = {"@/p.csv: ", "no profile points"}},
-    {.name = "TnearAboveTfar", .rays = std::string(kGoodRays) + "\n0,0,0,1,0,0,2,1\n",
+    {.name = "TnearAboveTfar",
+     .rays = std::string(kGoodRays) + "\n0,0,0,1,0,0,2,1\n",
      .message = {"@/r.csv:3: ", "tnear = \"2\"", "tfar = \"1\""}},
     {.name = "RayWithSevenFields", .rays = "0,0,0,1,0,0,0\n", .message = {"@/r.csv:1: ", "expected 8", "found 7"}},
-    {.name = "ZeroDirection", .rays = "ox,oy,oz,dx,dy,dz,tnear,tfar\n0,0,0,0,0,0,0,1\n",
+    {.name = "ZeroDirection",
+     .rays = "ox,oy,oz,dx,dy,dz,tnear,tfar\n0,0,0,0,0,0,0,1\n",
      .message = {"@/r.csv:2: ", "direction"}},
     {.name = "NanInRay", .rays = std::string(kGoodRays) + "0,nan,0,1,0,0,0,1\n", .message = {"@/r.csv:2: ", "oy"}},
     {.name = "OutputDirectoryMissing",
@@ -591,49 +603,81 @@ const std::vector<BadInput> kBadInputs = {
      .replaceFiles = true},
     {.name = "MethodNotAnOption", .args = {"--method", "exact"}, .message = {"--method"}, .usageError = true},
     {.name = "ShellNotAnOption", .args = {"--shell", "sphere"}, .message = {"--shell"}, .usageError = true},
-    {.name = "TooFewSlices", .args = {"--slices", "2"}, .message = {"--slices: 2 is out of range: it must lie in [3, 16777216]"},
+    {.name = "TooFewSlices",
+     .args = {"--slices", "2"},
+     .message = {"--slices: 2 is out of range: it must lie in [3, 16777216]"},
      .usageError = true},
-    {.name = "SubdivisionsNotANumber", .args = {"--subdivisions", "two"}, .message = {"--subdivisions"},
+    {.name = "SubdivisionsNotANumber",
+     .args = {"--subdivisions", "two"},
+     .message = {"--subdivisions"},
      .usageError = true},
-    {.name = "NegativeSubdivisions", .args = {"--subdivisions", "-1"}, .message = {"--subdivisions"},
+    {.name = "NegativeSubdivisions",
+     .args = {"--subdivisions", "-1"},
+     .message = {"--subdivisions"},
      .usageError = true},
     {.name = "UnknownOption", .args = {"--bogus", "1"}, .message = {"--bogus"}, .usageError = true},
     {.name = "SplineNotAnOption", .args = {"--spline", "cubic"}, .message = {"--spline"}, .usageError = true},
     // --tolerance is read as revolve-render reads it (common/tolerance_option.h): the value as
     // written, and the rule, in a sentence.
-    {.name = "ToleranceNotPositive", .args = {"--spline", "natural", "--tolerance", "0"},
-     .message = {"--tolerance: \"0\" is not a finite number > 0 (the polyline's largest distance from the curve"}, .usageError = true},
-    {.name = "ToleranceNegative", .args = {"--spline", "natural", "--tolerance", "-1"},
-     .message = {"--tolerance: \"-1\" is not a finite number > 0"}, .usageError = true},
-    {.name = "ToleranceNotANumber", .args = {"--spline", "natural", "--tolerance", "nan"},
-     .message = {"--tolerance: \"nan\" is not a finite number > 0"}, .usageError = true},
-    {.name = "ToleranceInfinite", .args = {"--spline", "natural", "--tolerance", "inf"},
-     .message = {"--tolerance: \"inf\" is not a finite number > 0"}, .usageError = true},
-    {.name = "ToleranceText", .args = {"--spline", "natural", "--tolerance", "abc"},
-     .message = {"--tolerance: \"abc\" is not a finite number > 0"}, .usageError = true},
-    {.name = "ToleranceEmpty", .args = {"--spline", "natural", "--tolerance", ""},
-     .message = {"--tolerance: \"\" is not a finite number > 0"}, .usageError = true},
+    {.name = "ToleranceNotPositive",
+     .args = {"--spline", "natural", "--tolerance", "0"},
+     .message = {"--tolerance: \"0\" is not a finite number > 0 (the polyline's largest distance from the curve"},
+     .usageError = true},
+    {.name = "ToleranceNegative",
+     .args = {"--spline", "natural", "--tolerance", "-1"},
+     .message = {"--tolerance: \"-1\" is not a finite number > 0"},
+     .usageError = true},
+    {.name = "ToleranceNotANumber",
+     .args = {"--spline", "natural", "--tolerance", "nan"},
+     .message = {"--tolerance: \"nan\" is not a finite number > 0"},
+     .usageError = true},
+    {.name = "ToleranceInfinite",
+     .args = {"--spline", "natural", "--tolerance", "inf"},
+     .message = {"--tolerance: \"inf\" is not a finite number > 0"},
+     .usageError = true},
+    {.name = "ToleranceText",
+     .args = {"--spline", "natural", "--tolerance", "abc"},
+     .message = {"--tolerance: \"abc\" is not a finite number > 0"},
+     .usageError = true},
+    {.name = "ToleranceEmpty",
+     .args = {"--spline", "natural", "--tolerance", ""},
+     .message = {"--tolerance: \"\" is not a finite number > 0"},
+     .usageError = true},
     {.name = "ToleranceForAPolyline", .args = {"--tolerance", "0.01"}, .message = {"--tolerance", "curved --spline"}},
     // Five points cannot make cubic Bezier pieces sharing their ends: the last point, line 6.
-    {.name = "BezierPointCount", .profile = "r,z\n0,0\n1,0\n1,1\n1,2\n0,2\n", .args = {"--spline", "bezier"},
+    {.name = "BezierPointCount",
+     .profile = "r,z\n0,0\n1,0\n1,1\n1,2\n0,2\n",
+     .args = {"--spline", "bezier"},
      .message = {"@/p.csv:6: ", "3n + 1"}},
     // Points 1 and 2 (lines 3 and 4) of a natural spline are equal: the chord between has no length.
-    {.name = "NaturalSplineRepeatedPoint", .profile = "r,z\n0,0\n1,0\n1,0\n0,1\n", .args = {"--spline", "natural"},
+    {.name = "NaturalSplineRepeatedPoint",
+     .profile = "r,z\n0,0\n1,0\n1,0\n0,1\n",
+     .args = {"--spline", "natural"},
      .message = {"@/p.csv:4: ", "repeats point 1"}},
     // One Bezier piece from the axis to the axis, reaching r = 0.375: within 2 its polyline is the
     // chord on the axis, which nothing hits.
-    {.name = "ToleranceCollapsingTheCurve", .profile = "r,z\n0,0\n0.5,0.2\n0.5,0.8\n0,1\n", .args = {"--spline", "bezier", "--tolerance", "2"},
+    {.name = "ToleranceCollapsingTheCurve",
+     .profile = "r,z\n0,0\n0.5,0.2\n0.5,0.8\n0,1\n",
+     .args = {"--spline", "bezier", "--tolerance", "2"},
      .message = {"--tolerance: polyline tolerance 2 collapses the bezier spline onto the axis", "r = 0.375"}},
-    {.name = "ToleranceBelowTheCurvesResolution", .args = {"--spline", "catmull-rom", "--tolerance", "1e-30"},
+    {.name = "ToleranceBelowTheCurvesResolution",
+     .args = {"--spline", "catmull-rom", "--tolerance", "1e-30"},
      .message = {"--tolerance", "2^-40"}},
-    {.name = "KajiyaForACurve", .args = {"--spline", "natural", "--method", "kajiya"},
-     .message = {"--method kajiya: Kajiya's strip tree bounds polylines only", "--method mibit or linear, or --tolerance"}},
+    {.name = "KajiyaForACurve",
+     .args = {"--spline", "natural", "--method", "kajiya"},
+     .message = {"--method kajiya: Kajiya's strip tree bounds polylines only",
+                 "--method mibit or linear, or --tolerance"}},
     // r = (1 - 2u)^2 on the middle piece (points 2 to 4, lines 4 to 6): it touches the axis at u = 1/2,
     // between the points the curve passes through.
-    {.name = "QuadraticTouchingTheAxisBetweenItsPoints", .profile = "r,z\n0,0\n0.5,0\n1,0\n-1,0.5\n1,1\n0.5,1\n0,1\n",
-     .args = {"--spline", "quadratic"}, .message = {"@/p.csv:4: ", "touches the axis", "at u = 0.5"}},
-    {.name = "OutOptionMissing", .args = {"--profile", "@/p.csv", "--rays", "@/r.csv"}, .message = {"--out"},
-     .usageError = true, .replaceFiles = true},
+    {.name = "QuadraticTouchingTheAxisBetweenItsPoints",
+     .profile = "r,z\n0,0\n0.5,0\n1,0\n-1,0.5\n1,1\n0.5,1\n0,1\n",
+     .args = {"--spline", "quadratic"},
+     .message = {"@/p.csv:4: ", "touches the axis", "at u = 0.5"}},
+    {.name = "OutOptionMissing",
+     .args = {"--profile", "@/p.csv", "--rays", "@/r.csv"},
+     .message = {"--out"},
+     .usageError = true,
+     .replaceFiles = true},
 };
 
 class BadInputTest : public TraceCliTest, public ::testing::WithParamInterface<BadInput> {};

@@ -10,6 +10,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -17,27 +19,25 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <functional>
 #include <limits>
 #include <random>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <filesystem>
-#include <functional>
-#include <set>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <vector>
 
 namespace revolve::io {
 namespace {
 
+using revolve::testing::readWholeFile;
+using revolve::testing::ScratchDirectory;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::Not;
 using ::testing::StartsWith;
-using revolve::testing::ScratchDirectory;
-using revolve::testing::readWholeFile;
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
@@ -74,8 +74,8 @@ std::vector<double> heights(const ProfileFile& file) {
   return z;
 }
 std::array<float, 8> fieldsOf(const Ray& ray) {
-  return {ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z,
-          ray.tnear, ray.tfar};
+  return {ray.origin.x,    ray.origin.y,    ray.origin.z, ray.direction.x,
+          ray.direction.y, ray.direction.z, ray.tnear,    ray.tfar};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -157,8 +157,8 @@ TEST(ProfileCsv, CrlfLineEndingsAreAccepted) {
   EXPECT_THAT(heights(file), ::testing::ElementsAre(2.0, 4.0));
   EXPECT_THAT(file.lines, ::testing::ElementsAre(2u, 4u));
   // The carriage return is not part of the last field, so it is not quoted in messages either.
-  EXPECT_THAT(profileError("1,2\r\n3,x\r\n"), AllOf(StartsWith("p.csv:2: "), HasSubstr("z = \"x\""),
-                                                  Not(HasSubstr("\r"))));
+  EXPECT_THAT(profileError("1,2\r\n3,x\r\n"),
+              AllOf(StartsWith("p.csv:2: "), HasSubstr("z = \"x\""), Not(HasSubstr("\r"))));
 }
 
 TEST(ProfileCsv, LeadingPlusIsAccepted) {
@@ -261,8 +261,8 @@ TEST(RaysCsv, WrongHeaderIsNamedWithTheExpectedOne) {
 }
 
 TEST(RaysCsv, WrongColumnCountNamesExpectedAndFound) {
-  EXPECT_THAT(raysError("1,2,3,4,5,6,0\n"), AllOf(StartsWith("r.csv:1: "), HasSubstr("expected 8"),
-                                                  HasSubstr(kRayHeader), HasSubstr("found 7")));
+  EXPECT_THAT(raysError("1,2,3,4,5,6,0\n"),
+              AllOf(StartsWith("r.csv:1: "), HasSubstr("expected 8"), HasSubstr(kRayHeader), HasSubstr("found 7")));
   EXPECT_THAT(raysError("1,2,3,4,5,6,0,1\n1,2,3,4,5,6,0,1,2\n"),
               AllOf(StartsWith("r.csv:2: "), HasSubstr("expected 8"), HasSubstr("found 9")));
 }
@@ -315,8 +315,8 @@ TEST(RaysCsv, TfarMayBeInfinite) {
 }
 
 TEST(RaysCsv, ZeroDirectionIsRejected) {
-  EXPECT_THAT(raysError("1,2,3,4,5,6,0,1\n\n1,2,3,0,0,0,0,1\n"), AllOf(StartsWith("r.csv:3: "), HasSubstr("direction"),
-                                                                        HasSubstr("zero")));
+  EXPECT_THAT(raysError("1,2,3,4,5,6,0,1\n\n1,2,3,0,0,0,0,1\n"),
+              AllOf(StartsWith("r.csv:3: "), HasSubstr("direction"), HasSubstr("zero")));
   // -0 is zero too.
   EXPECT_THAT(raysError("1,2,3,-0,0,-0,0,1\n"), HasSubstr("zero"));
 }
@@ -329,8 +329,8 @@ TEST(RaysCsv, TinyDirectionIsNotZero) {
 }
 
 TEST(RaysCsv, NegativeTnearIsRejected) {
-  EXPECT_THAT(raysError(rayLineWith(6, "-1")), AllOf(StartsWith("r.csv:1: "), HasSubstr("tnear = \"-1\""),
-                                                     HasSubstr("negative")));
+  EXPECT_THAT(raysError(rayLineWith(6, "-1")),
+              AllOf(StartsWith("r.csv:1: "), HasSubstr("tnear = \"-1\""), HasSubstr("negative")));
   // -0 equals 0, which 0 <= tnear allows.
   EXPECT_EQ(parseRaysCsv(rayLineWith(6, "-0"), "r.csv").at(0).tnear, 0.0f);
 }
@@ -387,8 +387,8 @@ TEST(RaysCsv, ValuesBeyondFloatRangeRoundAsIeeeSays) {
   EXPECT_EQ(rays[0].origin.z, 0.0f);
   EXPECT_EQ(rays[0].direction.y, 1e-40f);
   EXPECT_EQ(rays[0].tfar, kInf);
-  EXPECT_THAT(raysError("1e39,0,0,1,0,0,0,1\n"), AllOf(StartsWith("r.csv:1: "), HasSubstr("ox = \"1e39\""),
-                                                        HasSubstr("not finite")));
+  EXPECT_THAT(raysError("1e39,0,0,1,0,0,0,1\n"),
+              AllOf(StartsWith("r.csv:1: "), HasSubstr("ox = \"1e39\""), HasSubstr("not finite")));
   EXPECT_THAT(raysError("0,0,0,-1e39,0,0,0,1\n"), HasSubstr("not finite"));
 }
 
@@ -610,11 +610,11 @@ TEST(HitsCsv, NineDigitsReadBackToTheSameFloat) {
 namespace revolve::io {
 namespace {
 
+using revolve::testing::readWholeFile;
+using revolve::testing::ScratchDirectory;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
-using revolve::testing::ScratchDirectory;
-using revolve::testing::readWholeFile;
 
 std::string errorOf(const std::function<void()>& action) {
   try {
@@ -634,8 +634,10 @@ TEST(ReadTextFile, OnlyARegularFileIsReadAndNothingElseBlocksOrGrows) {
   const std::string fifo = directory / "pipe";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   // A FIFO with no writer would block an ordinary open; it is refused at once instead.
-  EXPECT_EQ(errorOf([&] { readTextFile(fifo, kMaxCsvFileBytes, "a CSV file"); }), fifo + ": is a FIFO (named pipe), not a regular file");
-  EXPECT_EQ(errorOf([&] { readTextFile("/dev/zero", kMaxCsvFileBytes, "a CSV file"); }), "/dev/zero: is a character device, not a regular file");
+  EXPECT_EQ(errorOf([&] { readTextFile(fifo, kMaxCsvFileBytes, "a CSV file"); }),
+            fifo + ": is a FIFO (named pipe), not a regular file");
+  EXPECT_EQ(errorOf([&] { readTextFile("/dev/zero", kMaxCsvFileBytes, "a CSV file"); }),
+            "/dev/zero: is a character device, not a regular file");
   EXPECT_EQ(errorOf([&] { readTextFile(directory.path().string(), kMaxCsvFileBytes, "a CSV file"); }),
             directory.path().string() + ": is a directory, not a regular file");
 }
@@ -645,7 +647,8 @@ TEST(ReadTextFile, AFileOverItsLimitIsRefusedBeforeItIsRead) {
   const std::string exact = directory.write("exact.csv", std::string(100, 'x'));
   EXPECT_EQ(readTextFile(exact, 100, "a test file"), std::string(100, 'x'));
   const std::string over = directory.write("over.csv", std::string(101, 'x'));
-  EXPECT_EQ(errorOf([&] { readTextFile(over, 100, "a test file"); }), over + ": its 101 bytes is too large: a test file is read up to 100 bytes");
+  EXPECT_EQ(errorOf([&] { readTextFile(over, 100, "a test file"); }),
+            over + ": its 101 bytes is too large: a test file is read up to 100 bytes");
   // Sparse: a terabyte that takes no disk, refused from its size alone.
   const std::string huge = directory.write("huge.csv", "");
   ASSERT_EQ(truncate(huge.c_str(), off_t{1} << 40), 0);
@@ -658,16 +661,20 @@ TEST(CsvLines, ALineOverTheLimitIsAnErrorNamingItsNumberBeforeItIsSplit) {
   EXPECT_EQ(errorOf([&] { parseRaysCsv(header + std::string(kMaxCsvLineBytes + 1, ','), "r.csv"); }),
             "r.csv:2: the line is 4097 bytes long; a line of these files holds at most 4096");
   // At the limit the line is read (and judged by its fields).
-  EXPECT_THAT(errorOf([&] { parseRaysCsv(header + std::string(kMaxCsvLineBytes, ','), "r.csv"); }), HasSubstr("r.csv:2: expected 8"));
-  EXPECT_THAT(errorOf([&] { parseProfileCsv(std::string(5000, '7'), "p.csv"); }), StartsWith("p.csv:1: the line is 5000 bytes long"));
+  EXPECT_THAT(errorOf([&] { parseRaysCsv(header + std::string(kMaxCsvLineBytes, ','), "r.csv"); }),
+              HasSubstr("r.csv:2: expected 8"));
+  EXPECT_THAT(errorOf([&] { parseProfileCsv(std::string(5000, '7'), "p.csv"); }),
+              StartsWith("p.csv:1: the line is 5000 bytes long"));
 }
 
 TEST(RaysCsv, CoordinatesBeyondTwoToTheSixtyAreRefusedWithTheLimit) {
   // 2^60 = 1.152921504606846976e18; Embree asserts |x| <= 1.844e18.
   EXPECT_EQ(parseRaysCsv("1.15e18,0,0,1,0,0,0,inf\n", "r.csv").size(), 1u);
-  EXPECT_EQ(errorOf([&] { parseRaysCsv("1.16e18,0,0,1,0,0,0,inf\n", "r.csv"); }),
-            "r.csv:1: ox = \"1.16e18\" is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and Embree accepts");
-  EXPECT_THAT(errorOf([&] { parseRaysCsv("0,0,0,1,0,-2e18,0,inf\n", "r.csv"); }), StartsWith("r.csv:1: dz = \"-2e18\" is beyond +-2^60"));
+  EXPECT_EQ(
+      errorOf([&] { parseRaysCsv("1.16e18,0,0,1,0,0,0,inf\n", "r.csv"); }),
+      "r.csv:1: ox = \"1.16e18\" is beyond +-2^60 (1.15e18), the largest coordinate revolve traces and Embree accepts");
+  EXPECT_THAT(errorOf([&] { parseRaysCsv("0,0,0,1,0,-2e18,0,inf\n", "r.csv"); }),
+              StartsWith("r.csv:1: dz = \"-2e18\" is beyond +-2^60"));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -714,15 +721,19 @@ TEST(OutputSet, RefusesEmptyNamesNonFilesInputsAndRepeatsByIdentity) {
   outputs.addInput("a missing file", directory / "absent.csv");  // ignored: it is no file
   EXPECT_EQ(errorOf([&] { outputs.add("-o", ""); }), "-o: the file name is empty");
   EXPECT_EQ(errorOf([&] { outputs.add("-o", directory / "folder"); }),
-            directory / "folder" + ": -o names a directory, not a regular file (an output is written beside it and renamed into place)");
+            directory / "folder" +
+                ": -o names a directory, not a regular file (an output is written beside it and renamed into place)");
   EXPECT_THAT(errorOf([&] { outputs.add("-o", "/dev/null"); }), StartsWith("/dev/null: -o names a character device"));
-  for (const std::string& same : {scene, directory / "hard.json", directory / "soft.json", directory / "folder/../scene.json"}) {
-    EXPECT_EQ(errorOf([&] { outputs.add("--stats", same); }),
-              same + ": --stats names the same file as the scene file (an input); an output may not overwrite an input");
+  for (const std::string& same :
+       {scene, directory / "hard.json", directory / "soft.json", directory / "folder/../scene.json"}) {
+    EXPECT_EQ(
+        errorOf([&] { outputs.add("--stats", same); }),
+        same + ": --stats names the same file as the scene file (an input); an output may not overwrite an input");
   }
   outputs.add("-o", directory / "out.png");
   EXPECT_EQ(errorOf([&] { outputs.add("--stats", directory / "./out.png"); }),
-            directory / "./out.png" + ": --stats names the same file as -o (" + directory / "out.png" + "); each output needs a file of its own");
+            directory / "./out.png" + ": --stats names the same file as -o (" + directory / "out.png" +
+                "); each output needs a file of its own");
   outputs.add("--csv", directory / "absent.csv");
 }
 

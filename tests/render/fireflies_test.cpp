@@ -15,11 +15,11 @@
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
+#include <unistd.h>
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 namespace revolve {
 namespace {
@@ -40,7 +40,8 @@ Count countOnMany(bool regularize) {
   const render::RenderResult result = render::render(description, built, settings);
 
   // Through the EXR, as a user counts them.
-  const std::string exr = (std::filesystem::temp_directory_path() / ("revolve-fireflies-" + std::to_string(getpid()) + ".exr")).string();
+  const std::string exr =
+      (std::filesystem::temp_directory_path() / ("revolve-fireflies-" + std::to_string(getpid()) + ".exr")).string();
   io::writeFileAtomically(exr, [&](std::FILE* file) {
     io::OutputStream out(file, exr);
     render::writeImage(out, exr, result.image);

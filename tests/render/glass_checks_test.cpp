@@ -22,14 +22,16 @@ io::SceneDescription scene(const std::string& objects) {
                    "ring": {"points": [[1, 0], [2, 0], [2, 1], [1, 1], [1, 0]]},
                    "inside_out_ring": {"points": [[1, 0], [1, 1], [2, 1], [2, 0], [1, 0]]}},
       "materials": {"glass": {"type": "glass", "ior": 1.5}, "paint": {"type": "diffuse", "color": [0.5, 0.5, 0.5]}},
-      "objects": [)" + objects + "]}",
+      "objects": [)" + objects +
+                            "]}",
                         "test.json", ".");
 }
 
 TEST(GlassChecksTest, ClosedProfilesListedOutwardsAndOtherMaterialsPassQuietly) {
   EXPECT_TRUE(render::glassWarnings(scene(R"({"profile": "solid", "material": "glass"},
       {"profile": "ring", "material": "glass"}, {"profile": "bubble", "material": "paint"},
-      {"profile": "sheet", "material": "paint"})")).empty());
+      {"profile": "sheet", "material": "paint"})"))
+                  .empty());
 }
 
 TEST(GlassChecksTest, OpenAndClockwiseGlassIsNamedOncePerObject) {

@@ -34,15 +34,20 @@ std::string furnaceScene(const std::string& profile, double albedo, double envir
                          const std::string& from = "[0, -5, 1.2]") {
   const std::string a = number(albedo), l = number(environment);
   return R"({"camera": {"from": )" + from + R"(, "to": [0, 0, 0.3], "up": [0, 0, 1], "fov": 40},
-            "profiles": {"shape": {"points": )" + profile + R"(, "crease": 0},
+            "profiles": {"shape": {"points": )" +
+         profile + R"(, "crease": 0},
                          "glass_block": {"points": [[0, -1.5], [0.8, -1.5], [0.8, 2], [0, 2]]}},
-            "materials": {"m": {"type": "diffuse", "color": [)" + a + "," + a + "," + a + R"(]},
+            "materials": {"m": {"type": "diffuse", "color": [)" +
+         a + "," + a + "," + a + R"(]},
                           "clear": {"type": "glass", "ior": 1}},
-            "objects": [{"profile": "shape", "material": "m"})" + extra + R"(],
-            "environment": {"color": [)" + l + "," + l + "," + l + "]}}";
+            "objects": [{"profile": "shape", "material": "m"})" +
+         extra + R"(],
+            "environment": {"color": [)" +
+         l + "," + l + "," + l + "]}}";
 }
 
-render::RenderSettings smallSettings(int spp, render::IntegratorKind kind = render::IntegratorKind::path, int depth = 8) {
+render::RenderSettings smallSettings(int spp, render::IntegratorKind kind = render::IntegratorKind::path,
+                                     int depth = 8) {
   render::RenderSettings settings;
   settings.width = 48;
   settings.height = 36;
@@ -55,7 +60,8 @@ render::RenderSettings smallSettings(int spp, render::IntegratorKind kind = rend
 TEST(IntegratorClosedFormsTest, ConvexDiffuseObjectUnderUniformSkyShowsAlbedoTimesL) {
   const double environment = 0.7;
   for (const double albedo : {1.0, 0.6}) {
-    const testing::RenderRun run = renderText(furnaceScene(spherePointsJson(1.0, 48), albedo, environment), smallSettings(4));
+    const testing::RenderRun run =
+        renderText(furnaceScene(spherePointsJson(1.0, 48), albedo, environment), smallSettings(4));
     int object = 0;
     for (const float value : run.result.image.pixels) {
       // Pixels on the sphere's silhouette mix samples on and off it: a L <= value <= L.
@@ -94,7 +100,8 @@ TEST(IntegratorClosedFormsTest, GlassOfIndexOneIsInvisible) {
   // No Russian roulette: it would weigh the paths through the glass (two more hits) differently.
   render::RenderSettings settings = smallSettings(1);
   settings.integrator.rouletteAfter = 100;
-  const testing::RenderRun with = renderText(furnaceScene(spherePointsJson(1.0, 48), albedo, environment, glassInFront), settings);
+  const testing::RenderRun with =
+      renderText(furnaceScene(spherePointsJson(1.0, 48), albedo, environment, glassInFront), settings);
   const testing::RenderRun without = renderText(furnaceScene(spherePointsJson(1.0, 48), albedo, environment), settings);
   // The rays through the glass go straight on (Fresnel is exactly 0, the direction unchanged), but
   // start again from each crossing's offset origin: a ray through a pixel centre within an offset
@@ -111,7 +118,8 @@ TEST(IntegratorClosedFormsTest, GlassOfIndexOneIsInvisible) {
 std::optional<double> sphereHit(const Ray& ray, double radius) {
   const double ox = ray.origin.x, oy = ray.origin.y, oz = ray.origin.z;
   const double dx = ray.direction.x, dy = ray.direction.y, dz = ray.direction.z;
-  const double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz, c = ox * ox + oy * oy + oz * oz - radius * radius;
+  const double a = dx * dx + dy * dy + dz * dz, b = ox * dx + oy * dy + oz * dz,
+               c = ox * ox + oy * oy + oz * oz - radius * radius;
   const double disc = b * b - a * c;
   if (disc < 0) return std::nullopt;
   return (-b - std::sqrt(disc)) / a;
@@ -122,7 +130,8 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
   const double light[3] = {3, -4, 5};
   const std::string scene =
       std::string(R"({"camera": {"from": [0, -6, 0.5], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 25},
-        "profiles": {"ball": {"points": )") + spherePointsJson(radius, 800) + R"(}},
+        "profiles": {"ball": {"points": )") +
+      spherePointsJson(radius, 800) + R"(}},
         "materials": {"m": {"type": "diffuse", "color": [0.8, 0.8, 0.8]}},
         "objects": [{"profile": "ball", "material": "m"}],
         "lights": [{"type": "point", "position": [3, -4, 5], "intensity": [10, 10, 10]}]})";
@@ -137,7 +146,8 @@ TEST(IntegratorClosedFormsTest, WhittedMatchesLambertUnderOnePointLight) {
       const render::Color value = run.result.image.at(x, y);
       const std::optional<double> t = sphereHit(ray, radius);
       if (!t) continue;
-      const double p[3] = {ray.origin.x + *t * ray.direction.x, ray.origin.y + *t * ray.direction.y, ray.origin.z + *t * ray.direction.z};
+      const double p[3] = {ray.origin.x + *t * ray.direction.x, ray.origin.y + *t * ray.direction.y,
+                           ray.origin.z + *t * ray.direction.z};
       const double n[3] = {p[0] / radius, p[1] / radius, p[2] / radius};
       const double l[3] = {light[0] - p[0], light[1] - p[1], light[2] - p[2]};
       const double d2 = l[0] * l[0] + l[1] * l[1] + l[2] * l[2];
@@ -171,7 +181,8 @@ TEST(IntegratorClosedFormsTest, WhittedSeesThroughHollowGlassFromFiveLevels) {
     settings.width = 9, settings.height = 7;  // the centre pixel's ray is the camera's axis
     if (depth > 0) settings.integrator.depth = depth;
     const testing::RenderRun run = renderText(scene, settings);
-    EXPECT_EQ(run.result.image.at(4, 3).g, depth == 4 ? 0.0f : 0.7f) << "depth " << (depth > 0 ? depth : settings.integrator.depth);
+    EXPECT_EQ(run.result.image.at(4, 3).g, depth == 4 ? 0.0f : 0.7f)
+        << "depth " << (depth > 0 ? depth : settings.integrator.depth);
   }
 }
 

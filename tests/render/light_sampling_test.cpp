@@ -64,7 +64,8 @@ double sunReflection(V wo, V towardsSun, double halfDegrees, double irradiance, 
     const double theta = (i + 0.5) * half / n;
     for (int j = 0; j < n; ++j) {
       const double phi = (j + 0.5) * 2 * kPi / n;
-      const V wi = std::cos(theta) * towardsSun + (std::sin(theta) * std::cos(phi)) * s + (std::sin(theta) * std::sin(phi)) * t;
+      const V wi =
+          std::cos(theta) * towardsSun + (std::sin(theta) * std::cos(phi)) * s + (std::sin(theta) * std::sin(phi)) * t;
       sum += ggxTimesCosine(wo, wi, alpha, f0) * std::sin(theta);
     }
   }
@@ -77,12 +78,15 @@ struct Estimate {
 
 // The path tracer's radiance towards `wo` from the point (0, 0, 0) of a large plane of `material`
 // under one sun and nothing else, averaged over `samples` samples.
-Estimate planeUnderSun(const std::string& material, V towardsSun, double angleDegrees, double irradiance, V wo, int samples) {
+Estimate planeUnderSun(const std::string& material, V towardsSun, double angleDegrees, double irradiance, V wo,
+                       int samples) {
   const std::string text = R"({"camera": {"from": [0, -5, 5], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 30},
-      "profiles": {}, "materials": {"m": )" + material + R"(},
+      "profiles": {}, "materials": {"m": )" +
+                           material + R"(},
       "objects": [],
       "quads": [{"corners": [[-1000, -1000, 0], [1000, -1000, 0], [1000, 1000, 0], [-1000, 1000, 0]], "material": "m"}],
-      "lights": [{"type": "sun", "direction": )" + json(-1 * towardsSun) + R"(, "irradiance": [)" + std::to_string(irradiance) + "," +
+      "lights": [{"type": "sun", "direction": )" +
+                           json(-1 * towardsSun) + R"(, "irradiance": [)" + std::to_string(irradiance) + "," +
                            std::to_string(irradiance) + "," + std::to_string(irradiance) + R"(], "angle": )" +
                            std::to_string(angleDegrees) + "}]}";
   const io::SceneDescription description = io::parseScene(text, "test.json", ".");
@@ -110,8 +114,8 @@ Estimate planeUnderSun(const std::string& material, V towardsSun, double angleDe
 TEST(LightSamplingTest, DiffusePlaneUnderAWideSunReflectsTheCosineWeightedCone) {
   const double albedo = 0.6, irradiance = 2, angle = 45, half = angle / 2 * kPi / 180;
   const double expected = albedo * irradiance * std::sin(half) * std::sin(half) / (2 * kPi * (1 - std::cos(half)));
-  const Estimate estimate =
-      planeUnderSun(R"({"type": "diffuse", "color": [0.6, 0.6, 0.6]})", V{0, 0, 1}, angle, irradiance, unit(V{0.3, -0.5, 1}), 1 << 16);
+  const Estimate estimate = planeUnderSun(R"({"type": "diffuse", "color": [0.6, 0.6, 0.6]})", V{0, 0, 1}, angle,
+                                          irradiance, unit(V{0.3, -0.5, 1}), 1 << 16);
   EXPECT_NEAR(estimate.mean, expected, 4 * estimate.standardError) << "standard error " << estimate.standardError;
   EXPECT_GT(estimate.standardError, 0) << "both strategies vary: an exact answer would mean one is missing";
 }
@@ -120,8 +124,8 @@ struct MetalCase {
   double roughness, angle, sunTilt, viewTilt;
 };
 void PrintTo(const MetalCase& c, std::ostream* out) {
-  *out << "roughness " << c.roughness << ", sun " << c.angle << " deg wide, " << c.sunTilt << " deg from the normal, view "
-       << c.viewTilt << " deg on the other side";
+  *out << "roughness " << c.roughness << ", sun " << c.angle << " deg wide, " << c.sunTilt
+       << " deg from the normal, view " << c.viewTilt << " deg on the other side";
 }
 
 class GlossyUnderSunTest : public ::testing::TestWithParam<MetalCase> {};
@@ -131,7 +135,8 @@ TEST_P(GlossyUnderSunTest, MatchesTheMicrofacetIntegralOverTheCone) {
   const double irradiance = 1.5, f0 = 0.9, alpha = c.roughness * c.roughness;
   const V towardsSun = tilted(c.sunTilt), wo = tilted(-c.viewTilt);
   const double expected = sunReflection(wo, towardsSun, c.angle / 2, irradiance, alpha, f0);
-  const std::string metal = R"({"type": "metal", "color": [0.9, 0.9, 0.9], "roughness": )" + std::to_string(c.roughness) + "}";
+  const std::string metal =
+      R"({"type": "metal", "color": [0.9, 0.9, 0.9], "roughness": )" + std::to_string(c.roughness) + "}";
   const Estimate estimate = planeUnderSun(metal, towardsSun, c.angle, irradiance, wo, 1 << 16);
   // The midpoint rule on 600 x 600 points: well under 1e-4 of the integral for these lobes.
   EXPECT_NEAR(estimate.mean, expected, 4 * estimate.standardError + 1e-4 * expected)
@@ -142,8 +147,8 @@ TEST_P(GlossyUnderSunTest, MatchesTheMicrofacetIntegralOverTheCone) {
 // A rough lobe under a sun as wide as it (the strategies share the work), and a sharp lobe
 // narrower than a small sun (BSDF sampling finds most of it), each seen near the mirror direction.
 INSTANTIATE_TEST_SUITE_P(Lobes, GlossyUnderSunTest,
-                         ::testing::Values(MetalCase{0.5, 30, 20, 25}, MetalCase{0.5, 30, 10, 50}, MetalCase{0.1, 2, 30, 30},
-                                           MetalCase{0.1, 2, 30, 31}),
+                         ::testing::Values(MetalCase{0.5, 30, 20, 25}, MetalCase{0.5, 30, 10, 50},
+                                           MetalCase{0.1, 2, 30, 30}, MetalCase{0.1, 2, 30, 31}),
                          [](const ::testing::TestParamInfo<MetalCase>& info) {
                            return "case" + std::to_string(info.index);
                          });

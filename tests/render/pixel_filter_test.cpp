@@ -31,10 +31,12 @@ std::vector<double> columns(const render::RenderSettings& settings) {
   const double fov = 10, halfWidth = 10 * std::tan(fov / 2 * std::numbers::pi / 180) * kWidth / kHeight;
   const double wallEdge = halfWidth * (2 * kEdge / kWidth - 1);
   char corners[256];
-  std::snprintf(corners, sizeof corners, "[[-1000, 0, -1000], [%.17g, 0, -1000], [%.17g, 0, 1000], [-1000, 0, 1000]]", wallEdge, wallEdge);
+  std::snprintf(corners, sizeof corners, "[[-1000, 0, -1000], [%.17g, 0, -1000], [%.17g, 0, 1000], [-1000, 0, 1000]]",
+                wallEdge, wallEdge);
   const std::string scene = R"({"camera": {"from": [0, -10, 0], "to": [0, 0, 0], "up": [0, 0, 1], "fov": 10},
       "profiles": {}, "materials": {"black": {"type": "diffuse", "color": [0, 0, 0]}}, "objects": [],
-      "quads": [{"corners": )" + std::string(corners) + R"(, "material": "black"}],
+      "quads": [{"corners": )" +
+                            std::string(corners) + R"(, "material": "black"}],
       "environment": {"color": [1, 1, 1]}})";
   const testing::RenderRun run = testing::renderText(scene, settings);
   std::vector<double> means(kWidth, 0.0);

@@ -13,12 +13,12 @@
 #include <OpenImageIO/imagebuf.h>
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
-#include <unistd.h>
 
 namespace revolve {
 namespace {
@@ -77,15 +77,16 @@ render::Image readExr(const std::string& path) {
 // POV-Ray renders the exported scene; its picture must be revolve's whitted render of it.
 void expectPovRayRendersRevolvesPicture(const std::string& scene, double meanDifference) {
   const std::string povray = povrayOnPath();
-  if (povray.empty()) GTEST_SKIP() << "povray is not installed (Debian: apt-get install povray): the SDL is not rendered";
+  if (povray.empty())
+    GTEST_SKIP() << "povray is not installed (Debian: apt-get install povray): the SDL is not rendered";
   const ScratchDirectory dir;
   const io::SceneDescription description = io::parseScene(scene, "scene.json", dir.path().string());
   EXPECT_TRUE(io::writePovScene(dir / "scene.pov", description, {}).empty()) << "everything in this scene maps exactly";
 
   constexpr int kWidth = 96, kHeight = 72;
-  const auto run = testing::runProcess(povray, {"-D", "-V", "+Iscene.pov", "+Oimage.exr", "+FE", "+W96", "+H72", "-A", "+WT1",
-                                                "File_Gamma=1.0"},
-                                       dir.path().string());
+  const auto run = testing::runProcess(
+      povray, {"-D", "-V", "+Iscene.pov", "+Oimage.exr", "+FE", "+W96", "+H72", "-A", "+WT1", "File_Gamma=1.0"},
+      dir.path().string());
   ASSERT_EQ(run.status, 0) << run.err;
   const render::Image pov = readExr(dir / "image.exr");
   ASSERT_EQ(pov.width, kWidth);
@@ -116,7 +117,9 @@ void expectPovRayRendersRevolvesPicture(const std::string& scene, double meanDif
 // The pictures: a mirrored or shifted picture, a wrong field of view or a misplaced object differs
 // on whole objects (tens of percent of the mean); these differ on a few edge and shadow pixels
 // (0.74% here; README, "Against POV-Ray": 0.2% to 0.7% on its scenes).
-TEST(PovRoundTripTest, PovRayParsesTheExportAndRendersRevolvesPicture) { expectPovRayRendersRevolvesPicture(kScene, 0.03); }
+TEST(PovRoundTripTest, PovRayParsesTheExportAndRendersRevolvesPicture) {
+  expectPovRayRendersRevolvesPicture(kScene, 0.03);
+}
 
 // The same scene with its profiles as splines through the same points, traced exactly by revolve
 // and exported as POV-Ray's bezier_spline lathes of the same cubic pieces, which POV-Ray solves
@@ -127,7 +130,8 @@ TEST(PovRoundTripTest, SplineLathesRenderRevolvesPicture) {
   for (const char* name : {"\"pot\": {", "\"ball\": {"}) {
     const std::size_t at = scene.find(name);
     ASSERT_NE(at, std::string::npos);
-    scene.insert(at + std::string(name).size(), name[1] == 'p' ? R"("spline": "catmull-rom", )" : R"("spline": "natural", )");
+    scene.insert(at + std::string(name).size(),
+                 name[1] == 'p' ? R"("spline": "catmull-rom", )" : R"("spline": "natural", )");
   }
   const io::SceneDescription description = io::parseScene(scene, "scene.json", ".");
   ASSERT_TRUE(description.profiles[0].spline.has_value() && description.profiles[1].spline.has_value());

@@ -35,7 +35,8 @@ TEST(RenderAgreementTest, OneAndTwoThreadsGiveTheSameImageBitForBit) {
       one.integrator.kind = two.integrator.kind = kind;
       const testing::RenderRun a = testing::renderFile(scene, one), b = testing::renderFile(scene, two);
       ASSERT_EQ(a.result.image.pixels.size(), b.result.image.pixels.size());
-      EXPECT_EQ(0, std::memcmp(a.result.image.pixels.data(), b.result.image.pixels.data(), a.result.image.pixels.size() * sizeof(float)))
+      EXPECT_EQ(0, std::memcmp(a.result.image.pixels.data(), b.result.image.pixels.data(),
+                               a.result.image.pixels.size() * sizeof(float)))
           << scene;
       EXPECT_EQ(a.result.rays.bounce, b.result.rays.bounce);
     }
@@ -43,7 +44,8 @@ TEST(RenderAgreementTest, OneAndTwoThreadsGiveTheSameImageBitForBit) {
   // And a different seed does change it (the seed reaches the streams).
   const testing::RenderRun a = testing::renderFile(kStillLife, tiny(40, 30, 3, 7, 2));
   const testing::RenderRun c = testing::renderFile(kStillLife, tiny(40, 30, 3, 8, 2));
-  EXPECT_NE(0, std::memcmp(a.result.image.pixels.data(), c.result.image.pixels.data(), a.result.image.pixels.size() * sizeof(float)));
+  EXPECT_NE(0, std::memcmp(a.result.image.pixels.data(), c.result.image.pixels.data(),
+                           a.result.image.pixels.size() * sizeof(float)));
 }
 
 TEST(RenderAgreementTest, MeshOf256SlicesAgreesWithTheExactSurfacesWithinNoise) {
@@ -61,8 +63,9 @@ TEST(RenderAgreementTest, MeshOf256SlicesAgreesWithTheExactSurfacesWithinNoise) 
   mesh.slices = 8;
   const testing::RenderRun coarse = testing::renderFile(kPatio, settings, mesh);
   const double coarseDifference = testing::meanAbsoluteDifference(exact.result.image, coarse.result.image);
-  std::printf("mean |mibit - mesh 256| = %.6f, |mibit - mesh 8| = %.6f, |seed 1 - seed 2| = %.6f (linear, clamped to [0, 1])\n",
-              meshDifference, coarseDifference, noiseDifference);
+  std::printf(
+      "mean |mibit - mesh 256| = %.6f, |mibit - mesh 8| = %.6f, |seed 1 - seed 2| = %.6f (linear, clamped to [0, 1])\n",
+      meshDifference, coarseDifference, noiseDifference);
   EXPECT_LT(meshDifference, 0.01 * noiseDifference);
   EXPECT_GT(coarseDifference, 0.01 * noiseDifference);
 }

@@ -19,14 +19,14 @@
 namespace revolve {
 namespace {
 
-using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::BadCase;
+using ::testing::HasSubstr;
 using testing::kBottleCsv;
 using testing::kScene;
+using testing::readWholeFile;
 using testing::replaced;
 using testing::ScratchDirectory;
-using testing::readWholeFile;
+using ::testing::StartsWith;
 
 using Result = testing::ProcessResult;
 
@@ -55,7 +55,8 @@ TEST(RevolveRenderCliTest, RendersPngAndExrOfTheRequestedSizeAndWritesStats) {
   EXPECT_GT(stats["memory"]["revolve_bytes"].get<long>(), 0);
   EXPECT_GT(stats["memory"]["embree_bytes"].get<long>(), 0);
 
-  const Result exr = runRender(dir.path(), {"scene.json", "-o", "image.exr", "--width", "5", "--height", "4", "--spp", "1"});
+  const Result exr =
+      runRender(dir.path(), {"scene.json", "-o", "image.exr", "--width", "5", "--height", "4", "--spp", "1"});
   ASSERT_EQ(exr.status, 0) << exr.err;
   OIIO::ImageBuf linear(dir / "image.exr");
   ASSERT_TRUE(linear.read()) << linear.geterror();
@@ -70,7 +71,8 @@ TEST(RevolveRenderCliTest, RendersWithEmbreeConeCurves) {
   const ScratchDirectory dir;
   dir.write("scene.json", testing::replaced(kScene, R"(, "scale": 0.5)", ""));
   dir.write("bottle.csv", kBottleCsv);
-  const Result cone = runRender(dir.path(), {"scene.json", "-o", "image.png", "--geometry", "embree-cone", "--stats", "stats.json"});
+  const Result cone =
+      runRender(dir.path(), {"scene.json", "-o", "image.png", "--geometry", "embree-cone", "--stats", "stats.json"});
   ASSERT_EQ(cone.status, 0) << cone.err;
   OIIO::ImageBuf image(dir / "image.png");
   ASSERT_TRUE(image.read()) << image.geterror();
@@ -78,7 +80,7 @@ TEST(RevolveRenderCliTest, RendersWithEmbreeConeCurves) {
   const nlohmann::json stats = nlohmann::json::parse(readWholeFile(dir / "stats.json"));
   EXPECT_EQ(stats["geometry"], "embree-cone");
   EXPECT_GT(stats["memory"]["revolve_bytes"].get<long>(), 0);  // the shading normals
-  EXPECT_EQ(stats["mibit"]["queries"].get<long>(), 0);                 // no revolve geometry traced
+  EXPECT_EQ(stats["mibit"]["queries"].get<long>(), 0);         // no revolve geometry traced
 }
 
 TEST(RevolveRenderCliTest, ToleranceTracesSplinesAsPolylinesWithinThePixelFootprint) {
@@ -89,8 +91,8 @@ TEST(RevolveRenderCliTest, ToleranceTracesSplinesAsPolylinesWithinThePixelFootpr
   const ScratchDirectory dir;
   dir.write("scene.json", testing::replaced(kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"));
   dir.write("bottle.csv", kBottleCsv);
-  const Result result = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "80", "--height", "60", "--spp", "1",
-                                               "--tolerance", "pixel", "--stats", "stats.json"});
+  const Result result = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "80", "--height", "60",
+                                               "--spp", "1", "--tolerance", "pixel", "--stats", "stats.json"});
   ASSERT_EQ(result.status, 0) << result.err;
   const nlohmann::json stats = nlohmann::json::parse(readWholeFile(dir / "stats.json"));
   ASSERT_EQ(stats["curves_as_polylines"].size(), 1u);  // the bottle is a polyline already
@@ -100,8 +102,8 @@ TEST(RevolveRenderCliTest, ToleranceTracesSplinesAsPolylinesWithinThePixelFootpr
   EXPECT_NEAR(ball["tolerance"].get<double>(), footprint, 1e-4 * footprint);
   EXPECT_GE(ball["points"].get<int>(), 3);
   // A number is a tolerance in the profile's units.
-  const Result fixed = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "8", "--height", "6", "--spp", "1",
-                                              "--tolerance", "0.001", "--stats", "stats.json"});
+  const Result fixed = runRender(dir.path(), {"scene.json", "-o", "image.png", "--width", "8", "--height", "6", "--spp",
+                                              "1", "--tolerance", "0.001", "--stats", "stats.json"});
   ASSERT_EQ(fixed.status, 0) << fixed.err;
   EXPECT_EQ(nlohmann::json::parse(readWholeFile(dir / "stats.json"))["curves_as_polylines"][0]["tolerance"], 0.001);
 }
@@ -124,7 +126,8 @@ std::vector<unsigned char> pngPixels(const std::string& path, int& width, int& h
 // the glazed vase of scenes/spline_still_life.json under Whitted moved its highlights: 59 smooth
 // pixels differed by up to 135/255 at this size.
 TEST(RevolveRenderCliTest, ToleranceByThePixelShadesWithTheCurvesNormalsAndLooksLikeTheExactRender) {
-  nlohmann::json scene = nlohmann::json::parse(readWholeFile(std::string(REVOLVE_SOURCE_DIR) + "/scenes/spline_still_life.json"));
+  nlohmann::json scene =
+      nlohmann::json::parse(readWholeFile(std::string(REVOLVE_SOURCE_DIR) + "/scenes/spline_still_life.json"));
   nlohmann::json objects = nlohmann::json::array(), profiles = nlohmann::json::object();
   for (const nlohmann::json& object : scene["objects"]) {
     if (object["name"] == "vase" || object["name"] == "table") {
@@ -136,7 +139,8 @@ TEST(RevolveRenderCliTest, ToleranceByThePixelShadesWithTheCurvesNormalsAndLooks
   scene["profiles"] = profiles;
   const ScratchDirectory dir;
   dir.write("vase.json", scene.dump());
-  const std::vector<std::string> common{"vase.json", "--integrator", "whitted", "--width", "320", "--height", "210", "--spp", "4"};
+  const std::vector<std::string> common{"vase.json", "--integrator", "whitted", "--width", "320",
+                                        "--height",  "210",          "--spp",   "4"};
   std::vector<std::string> exact = common, pixel = common;
   exact.insert(exact.end(), {"-o", "exact.png"});
   pixel.insert(pixel.end(), {"-o", "pixel.png", "--tolerance", "pixel", "--stats", "stats.json"});
@@ -148,10 +152,13 @@ TEST(RevolveRenderCliTest, ToleranceByThePixelShadesWithTheCurvesNormalsAndLooks
   ASSERT_EQ(stats["curves_as_polylines"].size(), 1u);
   EXPECT_LT(stats["curves_as_polylines"][0]["points"].get<int>(), 40) << "a coarse polyline, or the test shows nothing";
   int width = 0, height = 0, w2 = 0, h2 = 0;
-  const std::vector<unsigned char> a = pngPixels(dir / "exact.png", width, height), b = pngPixels(dir / "pixel.png", w2, h2);
+  const std::vector<unsigned char> a = pngPixels(dir / "exact.png", width, height),
+                                   b = pngPixels(dir / "pixel.png", w2, h2);
   ASSERT_FALSE(a.empty());
   ASSERT_EQ(a.size(), b.size());
-  const auto at = [&](const std::vector<unsigned char>& image, int x, int y, int c) { return int(image[(std::size_t(y) * width + x) * 3 + c]); };
+  const auto at = [&](const std::vector<unsigned char>& image, int x, int y, int c) {
+    return int(image[(std::size_t(y) * width + x) * 3 + c]);
+  };
   int smooth = 0, differing = 0, worst = 0;
   for (int y = 2; y < height - 2; ++y) {
     for (int x = 2; x < width - 2; ++x) {
@@ -184,9 +191,10 @@ TEST(RevolveRenderCliTest, ToleranceByThePixelRendersEveryValidScene) {
   far["camera"]["from"] = {0.05, -1e6, 1.12};
   const ScratchDirectory dir;
   dir.write("far.json", far.dump());
-  for (const std::vector<std::string>& args : {std::vector<std::string>{stillLife, "--width", "160", "--height", "105"},
-                                                std::vector<std::string>{stillLife, "--width", "1", "--height", "1"},
-                                                std::vector<std::string>{"far.json", "--width", "200", "--height", "150"}}) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{stillLife, "--width", "160", "--height", "105"},
+        std::vector<std::string>{stillLife, "--width", "1", "--height", "1"},
+        std::vector<std::string>{"far.json", "--width", "200", "--height", "150"}}) {
     std::vector<std::string> run = args;
     run.insert(run.end(), {"--spp", "1", "--tolerance", "pixel", "-o", "image.png", "--stats", "stats.json"});
     SCOPED_TRACE(args[0] + " " + args[2] + " x " + args[4]);
@@ -261,8 +269,9 @@ TEST(RevolveRenderCliTest, ExportPovWritesTheSdlAndRendersOnlyWithAnOutput) {
                                    R"({"type": "metal", "color": [0.8, 0.8, 0.8], "roughness": 0.4})"));
   const Result metal = runRender(dir.path(), {"metal.json", "--export-pov", "metal.pov"});
   ASSERT_EQ(metal.status, 0) << metal.err;
-  EXPECT_EQ(metal.err, "revolve-render: warning: metal.pov: materials.white: metal of roughness 0.4 has no POV-Ray equivalent "
-                       "(no microfacet lobe); written as a mirror of its colour with a Blinn highlight\n");
+  EXPECT_EQ(metal.err,
+            "revolve-render: warning: metal.pov: materials.white: metal of roughness 0.4 has no POV-Ray equivalent "
+            "(no microfacet lobe); written as a mirror of its colour with a Blinn highlight\n");
 }
 
 TEST(RevolveRenderCliTest, StatsWithAnExportAloneIsAnError) {
@@ -271,7 +280,8 @@ TEST(RevolveRenderCliTest, StatsWithAnExportAloneIsAnError) {
   dir.write("bottle.csv", kBottleCsv);
   const Result result = runRender(dir.path(), {"scene.json", "--export-pov", "scene.pov", "--stats", "stats.json"});
   EXPECT_EQ(result.status, 1);
-  EXPECT_EQ(result.err, "revolve-render: --stats: --export-pov without -o renders nothing to report; add -o to render as well\n");
+  EXPECT_EQ(result.err,
+            "revolve-render: --stats: --export-pov without -o renders nothing to report; add -o to render as well\n");
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv"}));
 }
 

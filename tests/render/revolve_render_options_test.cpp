@@ -20,9 +20,9 @@ namespace {
 using ::testing::HasSubstr;
 using testing::kBottleCsv;
 using testing::kScene;
-using testing::ScratchDirectory;
 using testing::readWholeFile;
 using testing::replaced;
+using testing::ScratchDirectory;
 
 testing::ProcessResult runRender(const std::string& directory, const std::vector<std::string>& args) {
   return testing::runProcess(REVOLVE_RENDER_PATH, args, directory);
@@ -49,7 +49,8 @@ TEST(RevolveRenderOptionsTest, PickPrintsAndRefusesAnOutputItWouldNotWrite) {
   const testing::ProcessResult pick = runRender(dir.path(), {"scene.json", "--pick", "4,3"});
   ASSERT_EQ(pick.status, 0) << pick.err;
   EXPECT_THAT(pick.out, HasSubstr("object 0"));
-  for (const std::vector<std::string>& extra : {std::vector<std::string>{"-o", "image.png"}, {"--stats", "stats.json"}}) {
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"-o", "image.png"}, {"--stats", "stats.json"}}) {
     std::vector<std::string> args{"scene.json", "--pick", "4,3"};
     args.insert(args.end(), extra.begin(), extra.end());
     const testing::ProcessResult refused = runRender(dir.path(), args);
@@ -67,7 +68,8 @@ TEST(RevolveRenderOptionsTest, ExposureScalesTheImageByTwoToTheEv) {
   ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "plain.exr"}).status, 0);
   ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "bright.exr", "--exposure", "1"}).status, 0);
   ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "dark.exr", "--exposure", "-2"}).status, 0);
-  const std::vector<float> plain = readExr(dir / "plain.exr"), bright = readExr(dir / "bright.exr"), dark = readExr(dir / "dark.exr");
+  const std::vector<float> plain = readExr(dir / "plain.exr"), bright = readExr(dir / "bright.exr"),
+                           dark = readExr(dir / "dark.exr");
   ASSERT_EQ(plain.size(), bright.size());
   ASSERT_EQ(plain.size(), dark.size());
   int lit = 0;
@@ -83,29 +85,32 @@ TEST(RevolveRenderOptionsTest, ExposureScalesTheImageByTwoToTheEv) {
 TEST(RevolveRenderOptionsTest, GlassTheRendererCannotShowRightIsNamedOncePerObject) {
   const ScratchDirectory dir;
   // The ball listed from the top down (clockwise in (r, z)): glass on it would be a bubble.
-  const std::string scene =
-      replaced(replaced(kScene, R"("ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]})",
-                        R"("ball": {"points": [[0, 1], [0.5, 0.8], [0.5, 0.2], [0, 0]]})"),
-               R"("materials": {"white": {"type": "diffuse", "color": [0.8, 0.8, 0.8]}})",
-               R"("materials": {"white": {"type": "glass", "ior": 1.5}})");
+  const std::string scene = replaced(replaced(kScene, R"("ball": {"points": [[0, 0], [0.5, 0.2], [0.5, 0.8], [0, 1]]})",
+                                              R"("ball": {"points": [[0, 1], [0.5, 0.8], [0.5, 0.2], [0, 0]]})"),
+                                     R"("materials": {"white": {"type": "diffuse", "color": [0.8, 0.8, 0.8]}})",
+                                     R"("materials": {"white": {"type": "glass", "ior": 1.5}})");
   dir.write("scene.json", scene);
   dir.write("bottle.csv", kBottleCsv);
   const testing::ProcessResult run = runRender(dir.path(), {"scene.json", "-o", "image.png"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_EQ(lineCount(run.err), 1u) << run.err;  // the bottle is closed and outwards, the quad no solid
-  EXPECT_THAT(run.err, HasSubstr("revolve-render: warning: scene.json: objects[0]: glass on profile \"ball\" runs clockwise"));
+  EXPECT_THAT(run.err,
+              HasSubstr("revolve-render: warning: scene.json: objects[0]: glass on profile \"ball\" runs clockwise"));
 }
 
 TEST(RevolveRenderOptionsTest, StatsRecordTheSettingsAndWhittedDefaultsToDepthEight) {
   const ScratchDirectory dir;
   dir.write("scene.json", kScene);
   dir.write("bottle.csv", kBottleCsv);
-  ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "w.png", "--integrator", "whitted", "--filtered-shadows", "--stats", "w.json"}).status, 0);
+  ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "w.png", "--integrator", "whitted", "--filtered-shadows",
+                                   "--stats", "w.json"})
+                .status,
+            0);
   const nlohmann::json whitted = nlohmann::json::parse(readWholeFile(dir / "w.json"));
   EXPECT_EQ(whitted["depth"], 8);
   EXPECT_EQ(whitted["filtered_shadows"], true);
-  ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "p.png", "--no-regularize", "--filter", "box", "--exposure", "0.5",
-                                   "--stats", "p.json"})
+  ASSERT_EQ(runRender(dir.path(), {"scene.json", "-o", "p.png", "--no-regularize", "--filter", "box", "--exposure",
+                                   "0.5", "--stats", "p.json"})
                 .status,
             0);
   const nlohmann::json path = nlohmann::json::parse(readWholeFile(dir / "p.json"));

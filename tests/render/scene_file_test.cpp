@@ -1,9 +1,9 @@
 // The scene reader's refusals, in process: every bad scene of bad_scenes.h must raise one
 // SceneError whose message names the key path (or CSV file and line) and the rule. (The process
 // test runs revolve-render on one case of each kind, for its exit status and the files it leaves.)
-#include "bad_scenes.h"
 #include "io/scene_file.h"
 #include "../io/scratch_directory.h"
+#include "bad_scenes.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -15,8 +15,8 @@
 namespace revolve {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::BadCase;
+using ::testing::HasSubstr;
 
 // Runs in `directory` for the scope, so that the scene's relative CSV paths read as the tool's do.
 class WorkingDirectory {
@@ -100,15 +100,18 @@ TEST(SceneFileTest, TheLimitsAcceptTheirEdges) {
   dir.write("bottle.csv", testing::kBottleCsv);
   const std::string folder = dir.path().string();
   EXPECT_EQ(io::parseScene(text, "scene.json", folder).objects.size(), 2u);
-  EXPECT_THROW(io::parseScene(testing::replaced(text, "-1099511627776", "-1099511627777"), "scene.json", folder), io::SceneError);
-  EXPECT_THROW(io::parseScene(testing::replaced(text, "1.52587890625e-05", "1.5258789e-05"), "scene.json", folder), io::SceneError);
+  EXPECT_THROW(io::parseScene(testing::replaced(text, "-1099511627776", "-1099511627777"), "scene.json", folder),
+               io::SceneError);
+  EXPECT_THROW(io::parseScene(testing::replaced(text, "1.52587890625e-05", "1.5258789e-05"), "scene.json", folder),
+               io::SceneError);
 }
 
 TEST(SceneFileTest, SplineProfilesReadExactOrAsPolylines) {
   // The ball's points as a cubic Bezier piece: traced exactly, or as a polyline within a tolerance.
   const testing::ScratchDirectory dir;
   std::string scene = testing::replaced(testing::kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )");
-  scene = testing::replaced(scene, R"("bottle": {"csv")", R"("bottle": {"spline": "natural", "tolerance": 0.001, "csv")");
+  scene =
+      testing::replaced(scene, R"("bottle": {"csv")", R"("bottle": {"spline": "natural", "tolerance": 0.001, "csv")");
   dir.write("scene.json", scene);
   dir.write("bottle.csv", testing::kBottleCsv);
   const WorkingDirectory inside(dir.path());

@@ -44,7 +44,8 @@ SceneClearance clearanceIn(const io::SceneDescription& scene, const RobotBody& r
 const std::vector<Point2> kCone{{0, 0}, {0.5, 0}, {0, 1}};  // base radius 0.5, height 1
 
 TEST(ClearanceMapTest, PoleBesideTheRobotExactly) {
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({2, 1, 0}), "pole"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({2, 1, 0}), "pole"}});
   const SceneClearance c = clearanceIn(scene, {3, 1, 0.1, 1.0, 0.3});
   EXPECT_NEAR(c.clearance, 1 - 0.25 - 0.3, kExact);
   EXPECT_FALSE(c.collides);
@@ -78,7 +79,8 @@ TEST(ClearanceMapTest, ConeUprightAndUpsideDown) {
 }
 
 TEST(ClearanceMapTest, CollisionsAreNegativeWithTheirDepth) {
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({2, 1, 0}), "pole"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({2, 1, 0}), "pole"}});
   // The pole's side 0.25 from the robot's axis: 0.05 inside its radius 0.3.
   const SceneClearance c = clearanceIn(scene, {2.5, 1, 0.2, 1.0, 0.3});
   EXPECT_NEAR(c.clearance, -0.05, kExact);
@@ -126,19 +128,22 @@ TEST(ClearanceMapTest, FloorsWallsLintelsAndTableTopsExactly) {
 double sampledClearance(const std::vector<Point2>& profile, const io::SceneTransform& t, const RobotBody& robot) {
   const double theta = t.rotateDegrees * M_PI / 180, c = std::cos(theta), s = std::sin(theta);
   const auto& k = t.rotateAxis;
-  const double r[3][3] = {{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-                          {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-                          {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
+  const double r[3][3] = {
+      {c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
+      {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
+      {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
   double best = INFINITY;
   for (std::size_t i = 0; i + 1 < profile.size(); ++i) {
     for (int a = 0; a <= 200; ++a) {
       const double along = a / 200.0;
-      const double pr = profile[i].r + along * (profile[i + 1].r - profile[i].r), pz = profile[i].z + along * (profile[i + 1].z - profile[i].z);
+      const double pr = profile[i].r + along * (profile[i + 1].r - profile[i].r),
+                   pz = profile[i].z + along * (profile[i + 1].z - profile[i].z);
       for (int b = 0; b < 1440; ++b) {
         const double phi = 2 * M_PI * b / 1440;
         const double local[3] = {pr * std::cos(phi) * t.scale[0], pr * std::sin(phi) * t.scale[1], pz * t.scale[2]};
         Vec3d w;
-        for (int row = 0; row < 3; ++row) w[row] = r[row][0] * local[0] + r[row][1] * local[1] + r[row][2] * local[2] + t.translate[row];
+        for (int row = 0; row < 3; ++row)
+          w[row] = r[row][0] * local[0] + r[row][1] * local[1] + r[row][2] * local[2] + t.translate[row];
         best = std::min(best, robot::signedDistance(robot, w));
       }
     }
@@ -154,15 +159,18 @@ TEST(ClearanceMapTest, PoleLyingOnItsSideIsTiltedButExactWhereTheGapIsPlain) {
   const RobotBody beside{1, -1, 0.5, 1.5, 0.3};
   SceneClearance c = clearanceIn(scene, beside);
   const double robotSize = 0.3 + 1.0;
-  EXPECT_LE(c.clearance, 0.45 + kExact);                     // never more than there is
+  EXPECT_LE(c.clearance, 0.45 + kExact);                        // never more than there is
   EXPECT_GE(c.clearance, 0.45 - 0x1p-24 * robotSize - kExact);  // the search's tolerance
   EXPECT_TRUE(c.exact);
   // Under a bar laid the same way with its axis at height 1 (its underside at 0.75): a robot 0.6
   // tall, its top covering the bar's lowest line, leaves 0.15, which the bar's world box gives exactly.
-  const io::SceneDescription high = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({0, 0, 1.0}, {1, 0, 0, 90}), "bar"}});
+  const io::SceneDescription high =
+      testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({0, 0, 1.0}, {1, 0, 0, 90}), "bar"}});
   c = clearanceIn(high, {0.1, -1, 0.1, 0.6, 0.3});
   EXPECT_NEAR(c.clearance, 0.15, 1e-9);
-  EXPECT_LE(c.clearance, sampledClearance(testing::cylinderProfile(0.25, 0, 2), placed({0, 0, 1.0}, {1, 0, 0, 90}), {0.1, -1, 0.1, 0.6, 0.3}) + kExact);
+  EXPECT_LE(c.clearance, sampledClearance(testing::cylinderProfile(0.25, 0, 2), placed({0, 0, 1.0}, {1, 0, 0, 90}),
+                                          {0.1, -1, 0.1, 0.6, 0.3}) +
+                             kExact);
 }
 
 TEST(ClearanceMapTest, TiltedShapesAndSlopingQuadsNeverReportMoreThanThereIs) {
@@ -179,7 +187,8 @@ TEST(ClearanceMapTest, TiltedShapesAndSlopingQuadsNeverReportMoreThanThereIs) {
     double looseness = 0;
     for (int i = 0; i < 12; ++i) {
       const double z0 = u(random) / 3;
-      const RobotBody robot{u(random), u(random), z0, z0 + 0.5 + std::abs(u(random)) / 2, 0.1 + std::abs(u(random)) / 5};
+      const RobotBody robot{u(random), u(random), z0, z0 + 0.5 + std::abs(u(random)) / 2,
+                            0.1 + std::abs(u(random)) / 5};
       const SceneClearance c = map.query(robot);
       const double sampled = sampledClearance(profile, transform, robot);
       EXPECT_LE(c.clearance, sampled + kExact) << "case " << i;
@@ -227,13 +236,15 @@ TEST(ClearanceMapTest, TheGroundIsNotAnObstacle) {
   // floor is left out, the pole (reaching down to 0) and the table top are not.
   const std::array<Vec3d, 4> floor{{{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}};
   const std::array<Vec3d, 4> top{{{2, -1, 0.75}, {3, -1, 0.75}, {3, 1, 0.75}, {2, 1, 0.75}}};
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({-2, 0, 0}), "pole"}}, {floor, top});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), placed({-2, 0, 0}), "pole"}}, {floor, top});
   const robot::ClearanceMap grounded(scene, 0.0);
   EXPECT_EQ(grounded.obstacleCount(), 1u + 2);  // the pole and the table top's two triangles
   const SceneClearance c = grounded.query({0, 0, 0.05, 1.2, 0.3});
   EXPECT_NEAR(c.clearance, 2 - 0.25 - 0.3, kExact);
   EXPECT_EQ(c.object, 0);
-  EXPECT_NEAR(robot::ClearanceMap(scene).query({0, 0, 0.05, 1.2, 0.3}).clearance, 0.05, kExact);  // the floor, by default
+  EXPECT_NEAR(robot::ClearanceMap(scene).query({0, 0, 0.05, 1.2, 0.3}).clearance, 0.05,
+              kExact);  // the floor, by default
 }
 
 TEST(RobotArgumentTest, ReadsTheRobotAndNamesEachRule) {

@@ -38,14 +38,16 @@ void checkBeam(const io::BeamReturn& beam, const Vec3d& o, const Vec3d& u, const
   const double delta = 0x1p-21 * (norm(o) + kSceneSize);
   // Two unit vectors across the beam.
   const Vec3d helper = std::abs(u[2]) < 0.9 ? Vec3d{0, 0, 1} : Vec3d{1, 0, 0};
-  Vec3d e1{u[1] * helper[2] - u[2] * helper[1], u[2] * helper[0] - u[0] * helper[2], u[0] * helper[1] - u[1] * helper[0]};
+  Vec3d e1{u[1] * helper[2] - u[2] * helper[1], u[2] * helper[0] - u[0] * helper[2],
+           u[0] * helper[1] - u[1] * helper[0]};
   const double n1 = norm(e1);
   for (double& c : e1) c /= n1;
   const Vec3d e2{u[1] * e1[2] - u[2] * e1[1], u[2] * e1[0] - u[0] * e1[2], u[0] * e1[1] - u[1] * e1[0]};
   const std::optional<double> exact = truth(o, u);
   std::vector<std::optional<double>> nudged;
   for (const Vec3d& e : {e1, e2}) {
-    for (const double s : {-delta, delta}) nudged.push_back(truth({o[0] + s * e[0], o[1] + s * e[1], o[2] + s * e[2]}, u));
+    for (const double s : {-delta, delta})
+      nudged.push_back(truth({o[0] + s * e[0], o[1] + s * e[1], o[2] + s * e[2]}, u));
   }
   bool agree = true;
   double low = exact ? *exact : INFINITY, high = exact ? *exact : -INFINITY;
@@ -77,7 +79,8 @@ void checkBeam(const io::BeamReturn& beam, const Vec3d& o, const Vec3d& u, const
   EXPECT_NEAR(beam.z, o[2] + beam.range * u[2], rounding);
 }
 
-io::SensorDescription sensor(int samples, double minAngle, double maxAngle, std::vector<double> elevations, Vec3d position = {0, 0, 0}) {
+io::SensorDescription sensor(int samples, double minAngle, double maxAngle, std::vector<double> elevations,
+                             Vec3d position = {0, 0, 0}) {
   io::SensorDescription s;
   s.pose.position = position;
   s.horizontal = {samples, minAngle, maxAngle};
@@ -91,18 +94,19 @@ io::SensorDescription sensor(int samples, double minAngle, double maxAngle, std:
 // Every beam of every pose against `truth`, with the beams' world origins and directions written
 // here from the conventions (robot yaw, then the mounting position; azimuth about +Z from +X,
 // elevation up), not taken from the code under test.
-Tally checkScan(const io::SceneDescription& description, const io::SensorDescription& s, const std::vector<io::RobotPose>& poses,
-                const Truth& truth) {
+Tally checkScan(const io::SceneDescription& description, const io::SensorDescription& s,
+                const std::vector<io::RobotPose>& poses, const Truth& truth) {
   const scene::EmbreeScene built(description, {});
   const io::ScanTable scan = robot::Lidar(built, s).scan(poses);
   EXPECT_EQ(scan.poses, poses.size());
   Tally tally;
-  const double step = s.horizontal.samples > 1 ? (s.horizontal.maxAngle - s.horizontal.minAngle) / (s.horizontal.samples - 1) : 0;
+  const double step =
+      s.horizontal.samples > 1 ? (s.horizontal.maxAngle - s.horizontal.minAngle) / (s.horizontal.samples - 1) : 0;
   for (std::size_t p = 0; p < poses.size(); ++p) {
     const io::RobotPose& pose = poses[p];
     const auto& m = s.pose.position;
-    const Vec3d o{pose.x + m[0] * std::cos(pose.yaw) - m[1] * std::sin(pose.yaw), pose.y + m[0] * std::sin(pose.yaw) + m[1] * std::cos(pose.yaw),
-                  pose.z + m[2]};
+    const Vec3d o{pose.x + m[0] * std::cos(pose.yaw) - m[1] * std::sin(pose.yaw),
+                  pose.y + m[0] * std::sin(pose.yaw) + m[1] * std::cos(pose.yaw), pose.z + m[2]};
     for (std::size_t ring = 0; ring < s.elevations.size(); ++ring) {
       const double e = s.elevations[ring];
       for (int i = 0; i < s.horizontal.samples; ++i) {
@@ -128,11 +132,13 @@ const std::vector<io::RobotPose> kPoses{{0, 0, 0, 0}, {-1, 3, 0, -0.7}, {4, -0.5
 TEST(LidarTest, RangesToAPoleFromKnownPosesOnEveryBeam) {
   // A pole of radius 0.25 from z = 0 to 2 at (2, 1); the sensor mounted 0.125 ahead of the robot's
   // origin at height 0.5: a 2-D scan (361 beams a turn) and a 3-D one (9 x 91, +-0.5 rad).
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), testing::at(2, 1), "pole"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), testing::at(2, 1), "pole"}});
   const Truth pole = [](const Vec3d& o, const Vec3d& u) { return testing::rayCappedCylinder(o, u, 2, 1, 0.25, 0, 2); };
   expectMostlyDecided(checkScan(scene, sensor(361, -M_PI, M_PI, {}, {0.125, 0, 0.5}), kPoses, pole));
-  expectMostlyDecided(checkScan(scene, sensor(91, -M_PI, M_PI, {-0.5, -0.375, -0.25, -0.125, 0, 0.125, 0.25, 0.375, 0.5}, {0.125, 0, 0.5}),
-                                kPoses, pole));
+  expectMostlyDecided(checkScan(
+      scene, sensor(91, -M_PI, M_PI, {-0.5, -0.375, -0.25, -0.125, 0, 0.125, 0.25, 0.375, 0.5}, {0.125, 0, 0.5}),
+      kPoses, pole));
 }
 
 TEST(LidarTest, RangesToAConeOnEveryBeam) {
@@ -140,7 +146,8 @@ TEST(LidarTest, RangesToAConeOnEveryBeam) {
   const io::SceneDescription scene =
       testing::sceneOf({{std::vector<Point2>{{0, 0}, {0.5, 0}, {0, 1}}, testing::at(1.5, -0.5, 0.25), "cone"}});
   const Truth cone = [](const Vec3d& o, const Vec3d& u) { return testing::rayCone(o, u, 1.5, -0.5, 0.25, 0.5, 1.0); };
-  expectMostlyDecided(checkScan(scene, sensor(121, -M_PI, M_PI, {-0.3, -0.1, 0, 0.1, 0.3, 0.6}, {0, 0, 0.5}), kPoses, cone));
+  expectMostlyDecided(
+      checkScan(scene, sensor(121, -M_PI, M_PI, {-0.3, -0.1, 0, 0.1, 0.3, 0.6}, {0, 0, 0.5}), kPoses, cone));
 }
 
 TEST(LidarTest, RangesToASphereLikeProfileLieBetweenItsSpheres) {
@@ -149,7 +156,8 @@ TEST(LidarTest, RangesToASphereLikeProfileLieBetweenItsSpheres) {
   // between the two entries; every beam missing the outer sphere returns nothing.
   const double radius = 0.75, inner = radius * std::cos(M_PI / 512);
   const Vec3d centre{1, 2, 0.75};
-  const io::SceneDescription scene = testing::sceneOf({{testing::sphereProfile(radius, 256), testing::at(1, 2, 0.75), "ball"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::sphereProfile(radius, 256), testing::at(1, 2, 0.75), "ball"}});
   const scene::EmbreeScene built(scene, {});
   const io::SensorDescription s = sensor(181, -M_PI, M_PI, {-0.4, -0.2, 0, 0.2, 0.4}, {0, 0, 0.6});
   const io::ScanTable scan = robot::Lidar(built, s).scan(kPoses);
@@ -185,7 +193,8 @@ TEST(LidarTest, SensorAtTheCentreOfACylinderReadsItsRadius) {
   // An open tube of radius 2 around the sensor, 3 m above and below it: in 2-D every beam reads 2;
   // in 3-D a beam of elevation e reads 2 / cos(e), 2 horizontally.
   const double radius = 2;
-  const io::SceneDescription scene = testing::sceneOf({{std::vector<Point2>{{radius, -3}, {radius, 3}}, testing::at(0, 0), "tube"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{std::vector<Point2>{{radius, -3}, {radius, 3}}, testing::at(0, 0), "tube"}});
   const scene::EmbreeScene built(scene, {});
   const double tolerance = 0x1p-21 * 4 * radius;  // float ulps of the range (2^-23 of 4 m) with room
   const io::ScanTable planar = robot::Lidar(built, sensor(3600, -M_PI, M_PI, {})).scan(std::vector<io::RobotPose>{{}});
@@ -197,7 +206,8 @@ TEST(LidarTest, SensorAtTheCentreOfACylinderReadsItsRadius) {
   }
   std::vector<double> elevations;
   for (int k = 0; k < 16; ++k) elevations.push_back(-0.26 + k * 0.52 / 15);
-  const io::ScanTable spatial = robot::Lidar(built, sensor(1800, -M_PI, M_PI * (1 - 2.0 / 1800), elevations)).scan(std::vector<io::RobotPose>{{}});
+  const io::ScanTable spatial = robot::Lidar(built, sensor(1800, -M_PI, M_PI * (1 - 2.0 / 1800), elevations))
+                                    .scan(std::vector<io::RobotPose>{{}});
   ASSERT_EQ(spatial.beams.size(), 16u * 1800);
   for (std::size_t ring = 0; ring < 16; ++ring) {
     for (std::size_t i = 0; i < 1800; ++i) {
@@ -211,19 +221,20 @@ TEST(LidarTest, SensorAtTheCentreOfACylinderReadsItsRadius) {
 
 TEST(LidarTest, AnglesFollowRosConventions) {
   // Poles 3 m away on +Y and on -X, nothing elsewhere; a floor 0.5 below the sensor.
-  const io::SceneDescription scene = testing::sceneOf(
-      {{testing::cylinderProfile(0.25, -1, 1), testing::at(0, 3), "north"}, {testing::cylinderProfile(0.25, -1, 1), testing::at(-3, 0), "west"}},
-      {{{{-20, -20, -0.5}, {20, -20, -0.5}, {20, 20, -0.5}, {-20, 20, -0.5}}}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(0, 3), "north"},
+                        {testing::cylinderProfile(0.25, -1, 1), testing::at(-3, 0), "west"}},
+                       {{{{-20, -20, -0.5}, {20, -20, -0.5}, {20, 20, -0.5}, {-20, 20, -0.5}}}});
   const scene::EmbreeScene built(scene, {});
   // Four beams: 0, pi/2, pi, 3 pi/2 from +X (both fan ends included: 3 equal steps).
   io::SensorDescription s = sensor(4, 0, 1.5 * M_PI, {});
   const io::ScanTable scan = robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}});
   for (int i = 0; i < 4; ++i) EXPECT_DOUBLE_EQ(scan.azimuths[i], i * M_PI / 2);
-  EXPECT_TRUE(std::isinf(scan.at(0, 0, 0).range));        // +X: nothing
-  EXPECT_EQ(scan.at(0, 0, 1).object, 0);                    // pi/2, counter-clockwise: +Y, the north pole
+  EXPECT_TRUE(std::isinf(scan.at(0, 0, 0).range));  // +X: nothing
+  EXPECT_EQ(scan.at(0, 0, 1).object, 0);            // pi/2, counter-clockwise: +Y, the north pole
   EXPECT_NEAR(scan.at(0, 0, 1).range, 2.75, 1e-6);
-  EXPECT_EQ(scan.at(0, 0, 2).object, 1);                    // pi: -X, the west pole
-  EXPECT_TRUE(std::isinf(scan.at(0, 0, 3).range));        // -Y: nothing
+  EXPECT_EQ(scan.at(0, 0, 2).object, 1);            // pi: -X, the west pole
+  EXPECT_TRUE(std::isinf(scan.at(0, 0, 3).range));  // -Y: nothing
   // The robot turned a quarter turn left: its +X is the world's +Y.
   const io::ScanTable turned = robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{0, 0, 0, M_PI / 2}});
   EXPECT_EQ(turned.at(0, 0, 0).object, 0);
@@ -251,7 +262,8 @@ TEST(LidarTest, AnglesFollowRosConventions) {
 }
 
 TEST(LidarTest, NoReturnBeyondMaxOrBelowMinIsInfNeverClamped) {
-  const io::SceneDescription scene = testing::sceneOf({{std::vector<Point2>{{2, -3}, {2, 3}}, testing::at(0, 0), "tube"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{std::vector<Point2>{{2, -3}, {2, 3}}, testing::at(0, 0), "tube"}});
   const scene::EmbreeScene built(scene, {});
   io::SensorDescription s = sensor(100, -M_PI, M_PI, {});
   s.rangeMax = 1.5;  // the wall is at 2: beyond max
@@ -261,14 +273,17 @@ TEST(LidarTest, NoReturnBeyondMaxOrBelowMinIsInfNeverClamped) {
   }
   s.rangeMin = 2.5;  // below min
   s.rangeMax = 10;
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams) EXPECT_TRUE(std::isinf(beam.range));
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams)
+    EXPECT_TRUE(std::isinf(beam.range));
   s.rangeMin = 1.5;
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams) EXPECT_NEAR(beam.range, 2, 1e-6);
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams)
+    EXPECT_NEAR(beam.range, 2, 1e-6);
 }
 
 TEST(LidarTest, NoiseHasItsMeanAndStddevWhateverTheThreadCount) {
   // 5 poses x 20,000 beams at a wall 2 away: range = 2 + mean + stddev g, g standard normal.
-  const io::SceneDescription scene = testing::sceneOf({{std::vector<Point2>{{2, -3}, {2, 3}}, testing::at(0, 0), "tube"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{std::vector<Point2>{{2, -3}, {2, 3}}, testing::at(0, 0), "tube"}});
   const scene::EmbreeScene built(scene, {});
   io::SensorDescription s = sensor(20000, -M_PI, M_PI, {});
   s.noiseMean = 0.05;
@@ -302,13 +317,15 @@ TEST(LidarTest, NoiseHasItsMeanAndStddevWhateverTheThreadCount) {
   for (std::size_t i = 0; i < one.beams.size(); ++i) same += one.beams[i].range == other.beams[i].range ? 1 : 0;
   EXPECT_LT(same, 100);
   // Beams without a return get no noise: they stay inf.
-  const io::SceneDescription empty = testing::sceneOf({{std::vector<Point2>{{2, 5}, {2, 6}}, testing::at(0, 0), "above"}});
+  const io::SceneDescription empty =
+      testing::sceneOf({{std::vector<Point2>{{2, 5}, {2, 6}}, testing::at(0, 0), "above"}});
   const scene::EmbreeScene nothing(empty, {});
   for (const io::BeamReturn& beam : robot::Lidar(nothing, s).scan(poses, 2).beams) EXPECT_TRUE(std::isinf(beam.range));
 }
 
 TEST(LidarTest, ResolutionRoundsRangesToItsMultiples) {
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(2.03, 0.41), "pole"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(2.03, 0.41), "pole"}});
   const scene::EmbreeScene built(scene, {});
   io::SensorDescription s = sensor(2001, -0.5, 0.5, {});
   s.resolution = 0.01;
@@ -325,7 +342,8 @@ TEST(LidarTest, ResolutionRoundsRangesToItsMultiples) {
 TEST(LidarTest, MeshRangesAreLongerAndImproveWithSlices) {
   // A tessellated pole is inscribed in the exact one: its ranges are never shorter, and its mean
   // error falls with the slice count (the README measures how much).
-  const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(2, 0), "pole"}});
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(2, 0), "pole"}});
   const io::SensorDescription s = sensor(4001, -0.2, 0.2, {});
   const std::vector<io::RobotPose> poses{{}};
   const scene::EmbreeScene exactScene(scene, {});

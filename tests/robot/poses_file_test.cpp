@@ -34,16 +34,18 @@ struct BadPoses {
 
 // Every rule, one case each (in one test: a process per case costs seconds under the sanitizers).
 TEST(PosesFileTest, EachRuleNamesTheLineAndTheRule) {
-  const std::vector<BadPoses> cases{BadPoses{"Empty", "\n\n", "p.csv: empty: expected the header"},
-                      BadPoses{"NoHeader", "1,2,0,0\n", "p.csv:1: header \"1,2,0,0\" is not \"x,y,z,yaw\" or \"x,y,yaw\""},
-                      BadPoses{"WrongHeader", "x,y,theta\n1,2,0\n", "p.csv:1: header \"x,y,theta\" is not"},
-                      BadPoses{"HeaderOnly", "x,y,yaw\n", "p.csv: no poses after the header"},
-                      BadPoses{"TooFewValues", "x,y,z,yaw\n1,2,3,4\n1,2,3\n", "p.csv:3: expected 4 comma-separated values (x,y,z,yaw), found 3"},
-                      BadPoses{"NotANumber", "x,y,yaw\n1,two,0\n", "p.csv:2: y = \"two\" is not a number"},
-                      BadPoses{"EmptyX", "x,y,yaw\n,2,0\n", "p.csv:2: x = \"\" is not a number"},
-                      BadPoses{"EmptyYaw", "x,y,z,yaw\n1,2,3,\n", "p.csv:2: yaw = \"\" is not a number"},
-                      BadPoses{"Infinite", "x,y,yaw\n1,2,inf\n", "p.csv:2: yaw = \"inf\" is not finite"},
-                      BadPoses{"Overflow", "x,y,yaw\n1e999,2,0\n", "p.csv:2: x = \"1e999\" is not finite"}};
+  const std::vector<BadPoses> cases{
+      BadPoses{"Empty", "\n\n", "p.csv: empty: expected the header"},
+      BadPoses{"NoHeader", "1,2,0,0\n", "p.csv:1: header \"1,2,0,0\" is not \"x,y,z,yaw\" or \"x,y,yaw\""},
+      BadPoses{"WrongHeader", "x,y,theta\n1,2,0\n", "p.csv:1: header \"x,y,theta\" is not"},
+      BadPoses{"HeaderOnly", "x,y,yaw\n", "p.csv: no poses after the header"},
+      BadPoses{"TooFewValues", "x,y,z,yaw\n1,2,3,4\n1,2,3\n",
+               "p.csv:3: expected 4 comma-separated values (x,y,z,yaw), found 3"},
+      BadPoses{"NotANumber", "x,y,yaw\n1,two,0\n", "p.csv:2: y = \"two\" is not a number"},
+      BadPoses{"EmptyX", "x,y,yaw\n,2,0\n", "p.csv:2: x = \"\" is not a number"},
+      BadPoses{"EmptyYaw", "x,y,z,yaw\n1,2,3,\n", "p.csv:2: yaw = \"\" is not a number"},
+      BadPoses{"Infinite", "x,y,yaw\n1,2,inf\n", "p.csv:2: yaw = \"inf\" is not finite"},
+      BadPoses{"Overflow", "x,y,yaw\n1e999,2,0\n", "p.csv:2: x = \"1e999\" is not finite"}};
   for (const BadPoses& bad : cases) {
     SCOPED_TRACE(bad.name);
     try {

@@ -17,9 +17,9 @@
 namespace revolve {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::at;
 using testing::cylinderProfile;
+using ::testing::HasSubstr;
 using testing::sceneOf;
 using testing::sphereProfile;
 
@@ -48,7 +48,8 @@ TEST(RayLimitsTest, ADescriptionMadeInCodeWithATransformBeyondEmbreesRangeIsRefu
     const scene::EmbreeScene built(sceneOf({{cylinderProfile(1, 0, 1), tiny, "tiny"}}), {});
     ADD_FAILURE() << "accepted";
   } catch (const std::runtime_error& error) {
-    EXPECT_THAT(error.what(), HasSubstr("test scene: objects[0]: its transform would carry rays beyond Embree's range"));
+    EXPECT_THAT(error.what(),
+                HasSubstr("test scene: objects[0]: its transform would carry rays beyond Embree's range"));
   }
 }
 
@@ -74,13 +75,15 @@ TEST(DegenerateObjectsTest, TheCameraInsideAClosedObjectIsFoundThroughItsTransfo
   placed.scale = {2, 3, 0.5};
   placed.rotateAxis = {0, 0, 1};
   placed.rotateDegrees = 90;  // x -> y: the ball spans 3 along x and 2 along y
-  io::SceneDescription scene = sceneOf({{sphereProfile(1, 64), placed, "ball"}, {{{0, 0}, {1, 0}, {1, 1}}, at(4, -1, 2), "open cup"}});
+  io::SceneDescription scene =
+      sceneOf({{sphereProfile(1, 64), placed, "ball"}, {{{0, 0}, {1, 0}, {1, 1}}, at(4, -1, 2), "open cup"}});
   const auto warningsWithCameraAt = [&](io::Vec3d from) {
     scene.camera.from = from;
     return scene::degenerateObjectWarnings(scene, true);
   };
   EXPECT_THAT(warningsWithCameraAt({4 + 2.9, -1, 2}),
-              ::testing::ElementsAre("test scene: objects[0] \"ball\": the camera (camera.from) lies inside it: the view shows its inside, or nothing"));
+              ::testing::ElementsAre("test scene: objects[0] \"ball\": the camera (camera.from) lies inside it: the "
+                                     "view shows its inside, or nothing"));
   EXPECT_TRUE(warningsWithCameraAt({4 + 3.1, -1, 2}).empty());
   EXPECT_EQ(warningsWithCameraAt({4, -1 + 1.9, 2}).size(), 1u);
   EXPECT_TRUE(warningsWithCameraAt({4, -1 + 2.1, 2}).empty());
@@ -106,7 +109,9 @@ TEST(DegenerateObjectsTest, AnAxisOnlyProfileAndAnObjectBelowFloatResolutionAreN
   const std::vector<std::string> warnings = scene::degenerateObjectWarnings(scene, false);
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_THAT(warnings[0], HasSubstr("objects[0] \"thread\": every point of profile \"p0\" lies on the axis (r = 0)"));
-  EXPECT_THAT(warnings[1], HasSubstr("objects[1] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06"));
+  EXPECT_THAT(
+      warnings[1],
+      HasSubstr("objects[1] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06"));
 }
 
 }  // namespace

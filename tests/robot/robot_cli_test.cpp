@@ -17,10 +17,10 @@ namespace revolve {
 namespace {
 
 using ::testing::HasSubstr;
-using ::testing::StartsWith;
 using testing::readWholeFile;
 using testing::runProcess;
 using testing::ScratchDirectory;
+using ::testing::StartsWith;
 
 // A pole of radius 0.25 at (2, 0), 2 m tall, and a floor.
 const std::string kScene = R"({
@@ -76,8 +76,9 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   dir.write("scene.json", kScene);
   dir.write("sensor.json", kSensor);
   dir.write("poses.csv", kPoses);
-  const testing::ProcessResult run = runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses",
-                                                                     dir / "poses.csv", "-o", dir / "scan.csv", "--plot", dir / "scan.png"});
+  const testing::ProcessResult run =
+      runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv",
+                                      "-o", dir / "scan.csv", "--plot", dir / "scan.png"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams (1 ring x 3 azimuths)"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
@@ -90,8 +91,9 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,");
   EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,");
 
-  const testing::ProcessResult pcd = runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses",
-                                                                     dir / "poses.csv", "-o", dir / "scan.pcd", "--threads", "1"});
+  const testing::ProcessResult pcd =
+      runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv",
+                                      "-o", dir / "scan.pcd", "--threads", "1"});
   ASSERT_EQ(pcd.status, 0) << pcd.err;
   const std::string cloud = readWholeFile(dir / "scan.pcd");
   EXPECT_THAT(cloud, HasSubstr("\nWIDTH 3\nHEIGHT 3\n"));
@@ -110,7 +112,8 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   };
   EXPECT_GT(bigEndian(16), 400u);
   EXPECT_GT(bigEndian(20), 200u);
-  EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "sensor.json", "poses.csv", "scan.csv", "scan.pcd", "scan.png"}));
+  EXPECT_EQ(dir.entries(),
+            (std::set<std::string>{"scene.json", "sensor.json", "poses.csv", "scan.csv", "scan.pcd", "scan.png"}));
 }
 
 struct BadRun {
@@ -136,8 +139,11 @@ void expectOneLineFailure(const char* tool, const BadRun& bad, const char* prefi
   const std::set<std::string> before = dir.entries();
   std::vector<std::string> args;
   for (std::string arg : bad.args) {
-    for (const auto& [key, value] : {std::pair<std::string, std::string>{"{scene}", dir / "scene.json"}, {"{sensor}", dir / "sensor.json"},
-                                     {"{poses}", dir / "poses.csv"}, {"{out}", dir / "old.csv"}, {"{dir}", dir.path().string()}}) {
+    for (const auto& [key, value] : {std::pair<std::string, std::string>{"{scene}", dir / "scene.json"},
+                                     {"{sensor}", dir / "sensor.json"},
+                                     {"{poses}", dir / "poses.csv"},
+                                     {"{out}", dir / "old.csv"},
+                                     {"{dir}", dir.path().string()}}) {
       if (const std::size_t at = arg.find(key); at != std::string::npos) arg.replace(at, key.size(), value);
     }
     args.push_back(arg);
@@ -166,10 +172,12 @@ std::vector<BadRun> badLidarRuns() {
   std::vector<std::string> plotRing = kLidarArgs;
   plotRing.insert(plotRing.end(), {"--plot", "{dir}/scan.png", "--plot-ring", "1"});
   return {
-      {"SensorDegrees", kLidarArgs, "sensor.json: horizontal.max_angle: 90 is out of range: angles are in radians", kScene,
-       replaced(kSensor, R"("max_angle": 1.5707963267948966)", R"("max_angle": 90)")},
-      {"PosesBadNumber", kLidarArgs, "poses.csv:3: y = \"zero\" is not a number", kScene, kSensor, "x,y,yaw\n0,0,0\n1,zero,0\n"},
-      {"SceneBad", kLidarArgs, "scene.json: objects[0].profile: no profile named \"pol\"", replaced(kScene, R"("profile": "pole")", R"("profile": "pol")")},
+      {"SensorDegrees", kLidarArgs, "sensor.json: horizontal.max_angle: 90 is out of range: angles are in radians",
+       kScene, replaced(kSensor, R"("max_angle": 1.5707963267948966)", R"("max_angle": 90)")},
+      {"PosesBadNumber", kLidarArgs, "poses.csv:3: y = \"zero\" is not a number", kScene, kSensor,
+       "x,y,yaw\n0,0,0\n1,zero,0\n"},
+      {"SceneBad", kLidarArgs, "scene.json: objects[0].profile: no profile named \"pol\"",
+       replaced(kScene, R"("profile": "pole")", R"("profile": "pol")")},
       {"OutputExtension", txt, R"(scan.txt: unsupported scan extension ".txt"; use .csv)"},
       {"OutputFolderMissing", pcdElsewhere, "no/such/folder/scan.pcd: cannot create a file there"},
       {"PlotExtension", plotJpg, R"(scan.jpg: unsupported plot extension ".jpg")"},
@@ -195,8 +203,9 @@ TEST(RevolveClearanceCliTest, WritesTheClosedFormClearancePerPose) {
   // span 1.65 to 2.8, the pole (up to 2) is; at x = 1.5 the pole's side is 0.25 from the robot's
   // axis, 0.05 inside its radius.
   dir.write("poses.csv", "x,y,z,yaw\n0,0,,0\n0,0,1.6,0\n1.5,0,1.6,0\n");
-  const testing::ProcessResult run = runProcess(REVOLVE_CLEARANCE_PATH, {dir / "scene.json", "--robot", "0.3,0.05,1.2", "--poses",
-                                                                         dir / "poses.csv", "-o", dir / "clearance.csv"});
+  const testing::ProcessResult run = runProcess(
+      REVOLVE_CLEARANCE_PATH,
+      {dir / "scene.json", "--robot", "0.3,0.05,1.2", "--poses", dir / "poses.csv", "-o", dir / "clearance.csv"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_THAT(run.out, HasSubstr("3 poses, 1 collides"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "clearance.csv"));
@@ -214,14 +223,16 @@ TEST(RevolveClearanceCliTest, WritesTheClosedFormClearancePerPose) {
   expectRow(rows[3], {2, -0.05, 1, 0, 1.75, 0, into[6]});
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "poses.csv", "clearance.csv"}));
   // With the floor as the ground the robot drives on, the pole is the nearest obstacle at once.
-  const testing::ProcessResult grounded = runProcess(REVOLVE_CLEARANCE_PATH, {dir / "scene.json", "--robot", "0.3,0.05,1.2", "--poses",
-                                                                              dir / "poses.csv", "-o", dir / "clearance.csv", "--ground", "0"});
+  const testing::ProcessResult grounded =
+      runProcess(REVOLVE_CLEARANCE_PATH, {dir / "scene.json", "--robot", "0.3,0.05,1.2", "--poses", dir / "poses.csv",
+                                          "-o", dir / "clearance.csv", "--ground", "0"});
   ASSERT_EQ(grounded.status, 0) << grounded.err;
   const std::vector<double> pole = numbers(lines(readWholeFile(dir / "clearance.csv"))[1]);
   expectRow(lines(readWholeFile(dir / "clearance.csv"))[1], {0, 1.45, 0, 0, 1.75, 0, pole[6]});
 }
 
-const std::vector<std::string> kClearanceArgs{"{scene}", "--robot", "0.3,0.05,1.2", "--poses", "{poses}", "-o", "{out}"};
+const std::vector<std::string> kClearanceArgs{"{scene}", "--robot", "0.3,0.05,1.2", "--poses",
+                                              "{poses}", "-o",      "{out}"};
 
 std::vector<BadRun> badClearanceRuns() {
   const auto robot = [](const std::string& value) {
@@ -232,9 +243,11 @@ std::vector<BadRun> badClearanceRuns() {
   std::vector<std::string> pcd = kClearanceArgs;
   pcd.back() = "{dir}/out.pcd";
   return {
-      {"RobotTwoValues", robot("0.3,1.2"), "--robot \"0.3,1.2\": expected RADIUS,ZMIN,ZMAX (3 comma-separated numbers), found 2"},
+      {"RobotTwoValues", robot("0.3,1.2"),
+       "--robot \"0.3,1.2\": expected RADIUS,ZMIN,ZMAX (3 comma-separated numbers), found 2"},
       {"RobotMissing", {"{scene}", "--poses", "{poses}", "-o", "{out}"}, "--robot is required (see --help)"},
-      {"GroundNotANumber", {"{scene}", "--robot", "0.3,0,1", "--poses", "{poses}", "-o", "{out}", "--ground", "floor"},
+      {"GroundNotANumber",
+       {"{scene}", "--robot", "0.3,0,1", "--poses", "{poses}", "-o", "{out}", "--ground", "floor"},
        "--ground \"floor\" is not a finite number"},
       {"PosesBad", kClearanceArgs, "poses.csv:2: x = \"\" is not a number", kScene, kSensor, "x,y,yaw\n,0,0\n"},
       {"SceneBad", kClearanceArgs, "scene.json: not valid JSON", "{"},

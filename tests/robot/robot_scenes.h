@@ -30,7 +30,8 @@ inline io::SceneTransform at(double x, double y, double z = 0) {
 }
 
 // A description as the scene reader would return it: one profile per object, one material.
-inline io::SceneDescription sceneOf(const std::vector<PlacedProfile>& objects, const std::vector<std::array<Vec3d, 4>>& quads = {}) {
+inline io::SceneDescription sceneOf(const std::vector<PlacedProfile>& objects,
+                                    const std::vector<std::array<Vec3d, 4>>& quads = {}) {
   io::SceneDescription scene;
   scene.file = "test scene";
   scene.camera = {{0, -5, 1}, {0, 0, 1}, {0, 0, 1}, 40, {}, {}, {}};
@@ -97,19 +98,22 @@ inline std::optional<double> rayDisc(const Vec3d& o, const Vec3d& u, double cx, 
 }
 
 // A closed cylinder: side x^2 + y^2 = a^2 for z in [z0, z1], and its two end discs.
-inline std::optional<double> rayCappedCylinder(const Vec3d& o, const Vec3d& u, double cx, double cy, double a, double z0, double z1) {
+inline std::optional<double> rayCappedCylinder(const Vec3d& o, const Vec3d& u, double cx, double cy, double a,
+                                               double z0, double z1) {
   const double px = o[0] - cx, py = o[1] - cy;
   const auto onSide = [&](double t) {
     const double z = o[2] + t * u[2];
     return z >= z0 && z <= z1;
   };
-  const std::optional<double> side = firstRoot(u[0] * u[0] + u[1] * u[1], px * u[0] + py * u[1], px * px + py * py - a * a, onSide);
+  const std::optional<double> side =
+      firstRoot(u[0] * u[0] + u[1] * u[1], px * u[0] + py * u[1], px * px + py * py - a * a, onSide);
   return minPositive(side, minPositive(rayDisc(o, u, cx, cy, z0, a), rayDisc(o, u, cx, cy, z1, a)));
 }
 
 // A cone of base radius b at z = base, apex at z = base + height: x^2 + y^2 = (k (top - z))^2,
 // k = b / height, on z in [base, top] (not the mirror nappe), and its base disc.
-inline std::optional<double> rayCone(const Vec3d& o, const Vec3d& u, double cx, double cy, double base, double b, double height) {
+inline std::optional<double> rayCone(const Vec3d& o, const Vec3d& u, double cx, double cy, double base, double b,
+                                     double height) {
   const double k = b / height, top = base + height;
   const double px = o[0] - cx, py = o[1] - cy, pz = top - o[2];  // height below the apex
   const auto onNappe = [&](double t) {
@@ -118,7 +122,8 @@ inline std::optional<double> rayCone(const Vec3d& o, const Vec3d& u, double cx, 
   };
   // (px + t ux)^2 + (py + t uy)^2 - k^2 (pz - t uz)^2 = 0
   const std::optional<double> side =
-      firstRoot(u[0] * u[0] + u[1] * u[1] - k * k * u[2] * u[2], px * u[0] + py * u[1] + k * k * pz * u[2], px * px + py * py - k * k * pz * pz, onNappe);
+      firstRoot(u[0] * u[0] + u[1] * u[1] - k * k * u[2] * u[2], px * u[0] + py * u[1] + k * k * pz * u[2],
+                px * px + py * py - k * k * pz * pz, onNappe);
   return minPositive(side, rayDisc(o, u, cx, cy, base, b));
 }
 

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstring>
 #include <map>
-#include <sstream>
 #include <span>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -110,7 +110,7 @@ TEST(ScanFilesTest, PcdIsAnOrganisedCloudThatReadsBack) {
   EXPECT_EQ(header["SIZE"], "4 4 4 4 2 4");
   EXPECT_EQ(header["TYPE"], "F F F F U I");
   EXPECT_EQ(header["COUNT"], "1 1 1 1 1 1");
-  EXPECT_EQ(std::stoul(header["WIDTH"]), 3u);      // azimuths
+  EXPECT_EQ(std::stoul(header["WIDTH"]), 3u);       // azimuths
   EXPECT_EQ(std::stoul(header["HEIGHT"]), 2u * 2);  // rings x poses
   EXPECT_EQ(std::stoul(header["POINTS"]), 12u);
   EXPECT_EQ(header["DATA"], "ascii");

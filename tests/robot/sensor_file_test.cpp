@@ -41,7 +41,8 @@ TEST(SensorFileTest, ReadsEveryKey) {
 TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
   const SensorDescription s =
       parseSensor(R"({"pose": {"position": [0, 0, 1]}, "horizontal": {"samples": 1, "min_angle": 0, "max_angle": 0},
-                      "range": {"min": 0, "max": 5}})", "s.json");
+                      "range": {"min": 0, "max": 5}})",
+                  "s.json");
   EXPECT_EQ(s.pose.yaw, 0);
   EXPECT_EQ(s.pose.pitch, 0);
   EXPECT_EQ(s.pose.roll, 0);
@@ -53,7 +54,8 @@ TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
 TEST(SensorFileTest, VerticalFanAndElevationList) {
   const SensorDescription fan = parseSensor(
       R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
-          "vertical": {"samples": 3, "min_angle": -0.2, "max_angle": 0.2}, "range": {"min": 0, "max": 5}})", "s.json");
+          "vertical": {"samples": 3, "min_angle": -0.2, "max_angle": 0.2}, "range": {"min": 0, "max": 5}})",
+      "s.json");
   EXPECT_FALSE(fan.planar);
   ASSERT_EQ(fan.elevations.size(), 3u);
   EXPECT_DOUBLE_EQ(fan.elevations[0], -0.2);  // ring 0 is min_angle, the lowest
@@ -61,7 +63,8 @@ TEST(SensorFileTest, VerticalFanAndElevationList) {
   EXPECT_DOUBLE_EQ(fan.elevations[2], 0.2);
   const SensorDescription list = parseSensor(
       R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
-          "elevations": [0.1, -0.3, 0.05], "range": {"min": 0, "max": 5}})", "s.json");
+          "elevations": [0.1, -0.3, 0.05], "range": {"min": 0, "max": 5}})",
+      "s.json");
   EXPECT_EQ(list.elevations, (std::vector<double>{0.1, -0.3, 0.05}));  // rings in the order listed
 }
 
@@ -93,41 +96,56 @@ std::string with(const std::string& from, const std::string& to) {
 // Every rule, one case each (in one test: a process per case costs seconds under the sanitizers).
 TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
   const std::vector<BadSensor> cases{
-        BadSensor{"NotJson", "{", "s.json: not valid JSON"},
-        BadSensor{"MissingHorizontal", with(R"("horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},)", ""),
-                  R"(missing key "horizontal")"},
-        BadSensor{"MissingPose", with(R"("pose": {"position": [0.1, -0.2, 0.3], "yaw": 0.5, "pitch": -0.25, "roll": 0.125},)", ""),
-                  R"(missing key "pose")"},
-        BadSensor{"MissingPosition", with(R"("position": [0.1, -0.2, 0.3], )", ""), R"(pose: missing key "position")"},
-        BadSensor{"UnknownTopKey", with(R"("range")", R"("rnage")"), "rnage: unknown key; expected one of: pose, horizontal"},
-        BadSensor{"UnknownNestedKey", with(R"("seed")", R"("sead")"), "noise.sead: unknown key; expected one of: mean, stddev, seed"},
-        BadSensor{"RepeatedKey", with(R"("yaw": 0.5)", R"("yaw": 0.5, "yaw": 0.6)"), "s.json: pose.yaw: the key appears twice in its object"},
-        BadSensor{"SamplesNotANumber", with(R"("samples": 5)", R"("samples": "many")"), "horizontal.samples: expected a number, found string"},
-        BadSensor{"SamplesZero", with(R"("samples": 5)", R"("samples": 0)"), "horizontal.samples: 0 is out of range: must lie in [1, 1048576]"},
-        BadSensor{"SamplesFractional", with(R"("samples": 5)", R"("samples": 5.5)"), "horizontal.samples: 5.5 is not a whole number"},
-        BadSensor{"AngleInDegrees", with(R"("min_angle": -1.0)", R"("min_angle": -135)"),
-                  "horizontal.min_angle: -135 is out of range: angles are in radians, within [-2 pi, 2 pi] (degrees?)"},
-        BadSensor{"MaxBelowMin", with(R"("max_angle": 1.0)", R"("max_angle": -2.0)"), "horizontal.max_angle: -2 is below min_angle = -1"},
-        BadSensor{"MoreThanATurn", with(R"("min_angle": -1.0, "max_angle": 1.0)", R"("min_angle": -4, "max_angle": 4)"),
-                  "horizontal.max_angle: the fan spans 8 radians, more than a full turn"},
-        BadSensor{"OneSampleTwoAngles", with(R"("samples": 5)", R"("samples": 1)"), "horizontal.max_angle: 1 differs from min_angle = -1"},
-        BadSensor{"ElevationBeyondVertical", with(R"("range")", R"("elevations": [0.1, 2.0], "range")"),
-                  "elevations[1]: 2 is out of range: an elevation lies in [-pi/2, pi/2]"},
-        BadSensor{"ElevationsEmpty", with(R"("range")", R"("elevations": [], "range")"), "elevations: the list is empty"},
-        BadSensor{"VerticalAndElevations",
-                  with(R"("range")", R"("elevations": [0.1], "vertical": {"samples": 2, "min_angle": 0, "max_angle": 0.1}, "range")"),
-                  "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both"},
-        BadSensor{"VerticalMissingSamples", with(R"("range")", R"("vertical": {"min_angle": 0, "max_angle": 0.1}, "range")"),
-                  R"(vertical: missing key "samples")"},
-        BadSensor{"NegativeMin", with(R"("min": 0.1)", R"("min": -1)"), "range.min: -1 is negative"},
-        BadSensor{"MaxNotAboveMin", with(R"("max": 30)", R"("max": 0.1)"), "range.max: 0.1 is not above range.min = 0.1"},
-        BadSensor{"MaxInfinite", with(R"("max": 30)", R"("max": 1e999)"), "not valid JSON: number overflow parsing '1e999'"},
-        BadSensor{"NegativeResolution", with(R"("resolution": 0.01)", R"("resolution": -0.01)"), "range.resolution: -0.01 is negative"},
-        BadSensor{"NegativeStddev", with(R"("stddev": 0.01)", R"("stddev": -1)"), "noise.stddev: -1 is negative"},
-        BadSensor{"MissingStddev", with(R"("stddev": 0.01, )", ""), R"(noise: missing key "stddev")"},
-        BadSensor{"NegativeSeed", with(R"("seed": 18446744073709551615)", R"("seed": -3)"), "noise.seed: -3 is negative"},
-        BadSensor{"FractionalSeed", with(R"("seed": 18446744073709551615)", R"("seed": 1.5)"), "noise.seed: 1.5 is not a whole number"},
-        BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"), "pose.position: expected an array of 3 numbers"}};
+      BadSensor{"NotJson", "{", "s.json: not valid JSON"},
+      BadSensor{"MissingHorizontal", with(R"("horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},)", ""),
+                R"(missing key "horizontal")"},
+      BadSensor{"MissingPose",
+                with(R"("pose": {"position": [0.1, -0.2, 0.3], "yaw": 0.5, "pitch": -0.25, "roll": 0.125},)", ""),
+                R"(missing key "pose")"},
+      BadSensor{"MissingPosition", with(R"("position": [0.1, -0.2, 0.3], )", ""), R"(pose: missing key "position")"},
+      BadSensor{"UnknownTopKey", with(R"("range")", R"("rnage")"),
+                "rnage: unknown key; expected one of: pose, horizontal"},
+      BadSensor{"UnknownNestedKey", with(R"("seed")", R"("sead")"),
+                "noise.sead: unknown key; expected one of: mean, stddev, seed"},
+      BadSensor{"RepeatedKey", with(R"("yaw": 0.5)", R"("yaw": 0.5, "yaw": 0.6)"),
+                "s.json: pose.yaw: the key appears twice in its object"},
+      BadSensor{"SamplesNotANumber", with(R"("samples": 5)", R"("samples": "many")"),
+                "horizontal.samples: expected a number, found string"},
+      BadSensor{"SamplesZero", with(R"("samples": 5)", R"("samples": 0)"),
+                "horizontal.samples: 0 is out of range: must lie in [1, 1048576]"},
+      BadSensor{"SamplesFractional", with(R"("samples": 5)", R"("samples": 5.5)"),
+                "horizontal.samples: 5.5 is not a whole number"},
+      BadSensor{"AngleInDegrees", with(R"("min_angle": -1.0)", R"("min_angle": -135)"),
+                "horizontal.min_angle: -135 is out of range: angles are in radians, within [-2 pi, 2 pi] (degrees?)"},
+      BadSensor{"MaxBelowMin", with(R"("max_angle": 1.0)", R"("max_angle": -2.0)"),
+                "horizontal.max_angle: -2 is below min_angle = -1"},
+      BadSensor{"MoreThanATurn", with(R"("min_angle": -1.0, "max_angle": 1.0)", R"("min_angle": -4, "max_angle": 4)"),
+                "horizontal.max_angle: the fan spans 8 radians, more than a full turn"},
+      BadSensor{"OneSampleTwoAngles", with(R"("samples": 5)", R"("samples": 1)"),
+                "horizontal.max_angle: 1 differs from min_angle = -1"},
+      BadSensor{"ElevationBeyondVertical", with(R"("range")", R"("elevations": [0.1, 2.0], "range")"),
+                "elevations[1]: 2 is out of range: an elevation lies in [-pi/2, pi/2]"},
+      BadSensor{"ElevationsEmpty", with(R"("range")", R"("elevations": [], "range")"), "elevations: the list is empty"},
+      BadSensor{"VerticalAndElevations",
+                with(R"("range")",
+                     R"("elevations": [0.1], "vertical": {"samples": 2, "min_angle": 0, "max_angle": 0.1}, "range")"),
+                "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both"},
+      BadSensor{"VerticalMissingSamples",
+                with(R"("range")", R"("vertical": {"min_angle": 0, "max_angle": 0.1}, "range")"),
+                R"(vertical: missing key "samples")"},
+      BadSensor{"NegativeMin", with(R"("min": 0.1)", R"("min": -1)"), "range.min: -1 is negative"},
+      BadSensor{"MaxNotAboveMin", with(R"("max": 30)", R"("max": 0.1)"), "range.max: 0.1 is not above range.min = 0.1"},
+      BadSensor{"MaxInfinite", with(R"("max": 30)", R"("max": 1e999)"),
+                "not valid JSON: number overflow parsing '1e999'"},
+      BadSensor{"NegativeResolution", with(R"("resolution": 0.01)", R"("resolution": -0.01)"),
+                "range.resolution: -0.01 is negative"},
+      BadSensor{"NegativeStddev", with(R"("stddev": 0.01)", R"("stddev": -1)"), "noise.stddev: -1 is negative"},
+      BadSensor{"MissingStddev", with(R"("stddev": 0.01, )", ""), R"(noise: missing key "stddev")"},
+      BadSensor{"NegativeSeed", with(R"("seed": 18446744073709551615)", R"("seed": -3)"), "noise.seed: -3 is negative"},
+      BadSensor{"FractionalSeed", with(R"("seed": 18446744073709551615)", R"("seed": 1.5)"),
+                "noise.seed: 1.5 is not a whole number"},
+      BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"),
+                "pose.position: expected an array of 3 numbers"}};
   for (const BadSensor& bad : cases) {
     SCOPED_TRACE(bad.name);
     try {
@@ -143,14 +161,16 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
 
 TEST(SensorFileTest, TooManyBeamsAPose) {
   const std::string text = with(R"("samples": 5)", R"("samples": 1048576)");
-  const std::string withRings =
-      text.substr(0, text.find(R"("range")")) + R"("vertical": {"samples": 17, "min_angle": 0, "max_angle": 0.1}, )" +
-      text.substr(text.find(R"("range")"));
+  const std::string withRings = text.substr(0, text.find(R"("range")")) +
+                                R"("vertical": {"samples": 17, "min_angle": 0, "max_angle": 0.1}, )" +
+                                text.substr(text.find(R"("range")"));
   try {
     parseSensor(withRings, "s.json");
     FAIL() << "accepted";
   } catch (const SensorError& error) {
-    EXPECT_THAT(error.what(), HasSubstr("horizontal.samples: 1048576 samples x 17 channels = 17825792 beams a pose; at most 16777216"));
+    EXPECT_THAT(
+        error.what(),
+        HasSubstr("horizontal.samples: 1048576 samples x 17 channels = 17825792 beams a pose; at most 16777216"));
   }
 }
 

@@ -217,7 +217,8 @@ void appendHits(const Cubic& c, std::size_t piece, const RefRay& ray, Real reach
         return x * x + y * y - r * r;
       };
       for (const Real t : rootsOf(G, std::min(tA, tB), std::max(tA, tB), kSamples)) {
-        if (t >= ray.tnear && t <= ray.tfar) hits.push_back(hitAt(c, parameterAtHeight(c, u0, u1, ray.oz + t * ray.dz), t, ray, piece));
+        if (t >= ray.tnear && t <= ray.tfar)
+          hits.push_back(hitAt(c, parameterAtHeight(c, u0, u1, ray.oz + t * ray.dz), t, ray, piece));
       }
     }
   }
@@ -262,7 +263,9 @@ long double curveMeridianDistance(std::span<const Point2> bezier, long double x,
       const Real u = Real(i) / kSamples;
       const Real here = distance(u);
       best = std::min(best, here);
-      if ((i > 0 && distance(Real(i - 1) / kSamples) < here) || (i < kSamples && distance(Real(i + 1) / kSamples) < here)) continue;
+      if ((i > 0 && distance(Real(i - 1) / kSamples) < here) ||
+          (i < kSamples && distance(Real(i + 1) / kSamples) < here))
+        continue;
       Real a = std::max<Real>(0, Real(i - 1) / kSamples), b = std::min<Real>(1, Real(i + 1) / kSamples);
       const Real golden = (std::sqrt(5.0L) - 1) / 2;
       for (int k = 0; k < 90; ++k) {
@@ -294,7 +297,8 @@ bool curveVerdictIsFragile(std::span<const Point2> bezier, const RefRay& ray, lo
       (axis == 0 ? moved.ox : axis == 1 ? moved.oy : moved.oz) += sign * nudge;
       const std::optional<RefHit> other = intersectCurve(bezier, moved);
       if (other.has_value() != base.has_value()) return true;
-      if (other && std::abs(other->t - base->t) * std::sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz) > 1e-6L * size) {
+      if (other && std::abs(other->t - base->t) * std::sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz) >
+                       1e-6L * size) {
         return true;
       }
     }

@@ -27,8 +27,9 @@ std::vector<Point2> stairs(int steps) {
 std::vector<Point2> tinySegments(double tiny) {
   // A capped cylinder (r = 1, z in [0, 2]) whose four corners are cut by segments of length ~tiny,
   // and whose side has a tiny kink in the middle.
-  return {{0.0, 0.0}, {1.0 - tiny, 0.0},        {1.0, tiny},       {1.0, 1.0},
-          {1.0 + tiny, 1.0 + tiny}, {1.0, 1.0 + 2 * tiny}, {1.0, 2.0 - tiny}, {1.0 - tiny, 2.0}, {0.0, 2.0}};
+  return {{0.0, 0.0},        {1.0 - tiny, 0.0},        {1.0, tiny},
+          {1.0, 1.0},        {1.0 + tiny, 1.0 + tiny}, {1.0, 1.0 + 2 * tiny},
+          {1.0, 2.0 - tiny}, {1.0 - tiny, 2.0},        {0.0, 2.0}};
 }
 
 std::vector<Point2> nearDuplicates(std::mt19937_64& random) {

@@ -19,11 +19,12 @@ struct ClosedProfile {
 // 20,000+ points.
 std::vector<ClosedProfile> closedProfiles();
 
-std::vector<Point2> stairs(int steps);                       // alternating horizontal and vertical runs
-std::vector<Point2> tinySegments(double tiny);                // a cylinder whose corners are cut by segments of length `tiny`
-std::vector<Point2> nearDuplicates(std::mt19937_64& random);  // a sphere-like outline with clusters of points 1e-9 apart
-std::vector<Point2> manyPointVase(int points);                // a smooth vase outline of `points` points
-std::vector<Point2> nearlyFlatCaps();                         // caps horizontal to within 1e-6 and 1e-7
+std::vector<Point2> stairs(int steps);          // alternating horizontal and vertical runs
+std::vector<Point2> tinySegments(double tiny);  // a cylinder whose corners are cut by segments of length `tiny`
+std::vector<Point2> nearDuplicates(
+    std::mt19937_64& random);                   // a sphere-like outline with clusters of points 1e-9 apart
+std::vector<Point2> manyPointVase(int points);  // a smooth vase outline of `points` points
+std::vector<Point2> nearlyFlatCaps();           // caps horizontal to within 1e-6 and 1e-7
 
 // Whether (rho, z) lies inside the region a closed profile bounds in the meridian half-plane
 // (closed by the axis when both ends lie on it): crossing number of the ray from (rho, z)

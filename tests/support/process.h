@@ -11,16 +11,16 @@
 
 #include <gtest/gtest.h>
 
-#include <cerrno>
-#include <csignal>
-#include <cstring>
 #include <fcntl.h>
-#include <memory>
 #include <spawn.h>
-#include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <memory>
+#include <string>
 #include <vector>
 
 extern char** environ;
@@ -132,8 +132,7 @@ class RunningProcess {
     int status = status_;
     pid_t waited = pid_;
     if (!waited_) {
-      while ((waited = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
-      }
+      while ((waited = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {}
     }
     pid_ = -1;
     if (waited < 0) {
@@ -155,8 +154,8 @@ class RunningProcess {
 };
 
 // Runs `program` with `args` to its end (killed, and a test failure, after `timeoutSeconds` > 0).
-inline ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args, const ProcessOptions& options,
-                                double timeoutSeconds = 0) {
+inline ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args,
+                                const ProcessOptions& options, double timeoutSeconds = 0) {
   RunningProcess process(program, args, options);
   return process.finish(timeoutSeconds);
 }

@@ -78,15 +78,29 @@ std::vector<NamedSpline> closedSplines() {
   // A cup: a closed loop of quadratic pieces, up the outside and down the inside (not monotone in z).
   splines.push_back({"quadratic cup (a loop, not monotone in z)",
                      SplineKind::quadratic,
-                     {{0.05, 0.0}, {0.3, 0.0}, {0.4, 0.05}, {0.5, 0.5}, {0.5, 1.0}, {0.5, 1.03}, {0.47, 1.03},
-                      {0.46, 1.03}, {0.46, 1.0}, {0.46, 0.5}, {0.36, 0.1}, {0.2, 0.05}, {0.05, 0.05}, {0.0, 0.025},
+                     {{0.05, 0.0},
+                      {0.3, 0.0},
+                      {0.4, 0.05},
+                      {0.5, 0.5},
+                      {0.5, 1.0},
+                      {0.5, 1.03},
+                      {0.47, 1.03},
+                      {0.46, 1.03},
+                      {0.46, 1.0},
+                      {0.46, 0.5},
+                      {0.36, 0.1},
+                      {0.2, 0.05},
+                      {0.05, 0.05},
+                      {0.0, 0.025},
                       {0.05, 0.0}}});
-  splines.push_back({"catmull-rom vase",
-                     SplineKind::catmullRom,
-                     {{0.0, 0.0}, {0.2, 0.01}, {0.3, 0.1}, {0.42, 0.4}, {0.35, 0.75}, {0.2, 0.95}, {0.24, 1.1}, {0.0, 1.12}}});
-  splines.push_back({"natural goblet",
-                     SplineKind::natural,
-                     {{0.0, 0.0}, {0.3, 0.02}, {0.12, 0.1}, {0.06, 0.3}, {0.2, 0.5}, {0.33, 0.75}, {0.36, 0.95}, {0.0, 1.0}}});
+  splines.push_back(
+      {"catmull-rom vase",
+       SplineKind::catmullRom,
+       {{0.0, 0.0}, {0.2, 0.01}, {0.3, 0.1}, {0.42, 0.4}, {0.35, 0.75}, {0.2, 0.95}, {0.24, 1.1}, {0.0, 1.12}}});
+  splines.push_back(
+      {"natural goblet",
+       SplineKind::natural,
+       {{0.0, 0.0}, {0.3, 0.02}, {0.12, 0.1}, {0.06, 0.3}, {0.2, 0.5}, {0.33, 0.75}, {0.36, 0.95}, {0.0, 1.0}}});
   // An hourglass pinched to a point on the axis in the middle.
   std::vector<Point2> hourglass{{0.0, -1.0}};
   straightTo(hourglass, {0.6, -1.0});

@@ -134,16 +134,19 @@ std::vector<Ray> incoherentRays(const Shape& shape, std::mt19937_64& random, std
   const Bounds box = shape.bounds();
   const double cx = 0.5 * (box.lower.x + box.upper.x), cy = 0.5 * (box.lower.y + box.upper.y),
                cz = 0.5 * (box.lower.z + box.upper.z);
-  const double radius = 0.5 * std::hypot(box.upper.x - box.lower.x, box.upper.y - box.lower.y, box.upper.z - box.lower.z);
+  const double radius =
+      0.5 * std::hypot(box.upper.x - box.lower.x, box.upper.y - box.lower.y, box.upper.z - box.lower.z);
   std::vector<Ray> rays;
   rays.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     const Vec3 u = randomUnit(random);
-    const Vec3 origin{float(cx + spread * radius * u.x), float(cy + spread * radius * u.y), float(cz + spread * radius * u.z)};
+    const Vec3 origin{float(cx + spread * radius * u.x), float(cy + spread * radius * u.y),
+                      float(cz + spread * radius * u.z)};
     const Vec3 target{uniform(random, box.lower.x, box.upper.x), uniform(random, box.lower.y, box.upper.y),
                       uniform(random, box.lower.z, box.upper.z)};
     const float scale = uniform(random, 0.5, 2.0);  // directions need not be unit length
-    rays.push_back({origin, {(target.x - origin.x) * scale, (target.y - origin.y) * scale, (target.z - origin.z) * scale}});
+    rays.push_back(
+        {origin, {(target.x - origin.x) * scale, (target.y - origin.y) * scale, (target.z - origin.z) * scale}});
   }
   return rays;
 }

@@ -16,16 +16,16 @@ struct NamedProfile {
 
 // Closed unless said otherwise. Each generator documents what makes it interesting.
 std::vector<Point2> cappedCylinder(double radius, double z0, double z1);  // disc, side, disc (horizontal + vertical)
-std::vector<Point2> sphereLike(double radius, int segments);              // inscribed polygon of a half circle, apexes on the axis
+std::vector<Point2> sphereLike(double radius, int segments);  // inscribed polygon of a half circle, apexes on the axis
 std::vector<Point2> torusLike(double major, double minor, int segments);  // closed loop off the axis
-std::vector<Point2> hollowVase();                                         // outer wall up, inner wall down: non-monotone in z
-std::vector<Point2> cup();                                                // runs of horizontal and vertical segments
-std::vector<Point2> hourglass();                                          // two cones meeting at an apex inside the profile
-std::vector<Point2> zigzagColumn(int teeth);                              // 2 * teeth monotone intervals
-std::vector<Point2> spindle(int segments);                                // apexes at both ends, smooth in between
-std::vector<Point2> openCone();                                           // one oblique segment: open, apex on the axis
-std::vector<Point2> annulus();                                            // one horizontal segment: open
-std::vector<Point2> starShaped(std::mt19937_64& random, int points);      // random closed polygon in the half-plane
+std::vector<Point2> hollowVase();             // outer wall up, inner wall down: non-monotone in z
+std::vector<Point2> cup();                    // runs of horizontal and vertical segments
+std::vector<Point2> hourglass();              // two cones meeting at an apex inside the profile
+std::vector<Point2> zigzagColumn(int teeth);  // 2 * teeth monotone intervals
+std::vector<Point2> spindle(int segments);    // apexes at both ends, smooth in between
+std::vector<Point2> openCone();               // one oblique segment: open, apex on the axis
+std::vector<Point2> annulus();                // one horizontal segment: open
+std::vector<Point2> starShaped(std::mt19937_64& random, int points);  // random closed polygon in the half-plane
 
 // At least ten profiles covering every feature above, for tests that sweep over "all profiles".
 std::vector<NamedProfile> standardProfiles();

@@ -85,17 +85,17 @@ class Profile {
   // bounds); within [2^-60, 2^60] for the extent and 2^-60 of it for a segment, every product the
   // kernel forms (up to the sixth power of the size, down to squared segment lengths) stays well
   // inside double's range.
-  static constexpr double kMaxCoordinate = 0x1p60;       // |r|, |z| <= 2^60 (about 1.15e18)
-  static constexpr double kMinExtent = 0x1p-60;          // largest |r| or |z| >= 2^-60 (about 8.7e-19)
+  static constexpr double kMaxCoordinate = 0x1p60;        // |r|, |z| <= 2^60 (about 1.15e18)
+  static constexpr double kMinExtent = 0x1p-60;           // largest |r| or |z| >= 2^-60 (about 8.7e-19)
   static constexpr double kMinSegmentFraction = 0x1p-60;  // segment length >= 2^-60 of that extent
 
   // Validates `points` and keeps them in order. Throws ProfileError for: fewer than 2 distinct
   // points; a non-finite coordinate; r < 0; a coordinate beyond kMaxCoordinate or a profile whose
   // extent is below kMinExtent; a segment shorter than kMinSegmentFraction of the extent; a
   // self-intersecting polyline (two segments sharing a point other than the vertex joining
-  // neighbours, or the closing point of a loop); more than kMaxPoints points. Exactly repeated consecutive points are dropped and listed in warnings().
-  // Horizontal segments (discs, annuli), vertical ones (cylinders), points on the axis (apexes)
-  // and profiles that are not monotone in z are all valid.
+  // neighbours, or the closing point of a loop); more than kMaxPoints points. Exactly repeated consecutive points are
+  // dropped and listed in warnings(). Horizontal segments (discs, annuli), vertical ones (cylinders), points on the
+  // axis (apexes) and profiles that are not monotone in z are all valid.
   explicit Profile(std::span<const Point2> points);
 
   // Points on `curve` whose polyline stays within `tolerance` of it: from each point, the chord
@@ -301,7 +301,6 @@ class Shape {
   std::size_t treeNodeCount() const noexcept;  // nodes of the search structure in use
   std::size_t memoryBytes() const noexcept;    // heap bytes held by the shape
 
-
  private:
   friend const detail::ShapeImpl& detail::implOf(const Shape& shape) noexcept;
   std::unique_ptr<detail::ShapeImpl> impl_;
@@ -318,10 +317,10 @@ struct Ray {
 };
 
 struct Hit {
-  float t;           // tnear <= t <= tfar
-  Vec3 point;        // hit point, computed in double precision from the exact solution
-  Vec3 normal;       // unit geometric normal (see Conventions)
-  float u, v;        // surface parameters (see Conventions)
+  float t;      // tnear <= t <= tfar
+  Vec3 point;   // hit point, computed in double precision from the exact solution
+  Vec3 normal;  // unit geometric normal (see Conventions)
+  float u, v;   // surface parameters (see Conventions)
   std::uint32_t segment;
 };
 
@@ -332,7 +331,7 @@ std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats = 
 bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
 
 struct SurfacePoint {
-  Vec3 point;     // closest point of the surface
+  Vec3 point;  // closest point of the surface
   float distance;
   std::uint32_t segment;
 };
@@ -396,7 +395,7 @@ class ShadingNormals {
   struct Meridian {  // a normal in the (r, z) half-plane, unit length
     double r, z;
   };
-  std::vector<Meridian> startNormal_, endNormal_;  // at each segment's first and second point
+  std::vector<Meridian> startNormal_, endNormal_;     // at each segment's first and second point
   std::vector<double> segmentStart_, segmentLength_;  // in units of the total arc length
   // From a curve: each point's place on it (Profile::curveParameters) and its cubic pieces'
   // control points; empty for normals interpolated along the polyline.
@@ -418,8 +417,8 @@ class ShadingNormals {
 // at a part's end or strip boundary, or a corner, at a root of a degree-5 polynomial).
 
 struct MeridianPoint {
-  Point2 point;      // the closest point of the profile polyline
-  double distance;   // from the query point
+  Point2 point;     // the closest point of the profile polyline
+  double distance;  // from the query point
   std::uint32_t segment;
 };
 // The closest point of the profile polyline to `query` = (rho, z), rho >= 0, in double precision:
@@ -463,6 +462,7 @@ struct CylinderClearance {
 // from that rectangle to the scaled profile polyline. Segments are solved in closed form (a
 // vertex-to-edge distance when apart, the deepest point of the clipped segment when inside).
 // Preconditions as stated in the structs; a non-finite value or a violated one gives NaN.
-CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder, MeridianScale scale = {}) noexcept;
+CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder,
+                                    MeridianScale scale = {}) noexcept;
 
 }  // namespace revolve

@@ -78,15 +78,14 @@ class Geometry {
 // that geomID in the scene that instance instID shows (instID is RTC_INVALID_GEOMETRY_ID for
 // geometries attached to `scene` itself); return nullptr for geometries to skip.
 struct ScenePoint {
-  Vec3 point;     // world space
+  Vec3 point;  // world space
   float distance;
   unsigned geomID;
   unsigned instID;  // RTC_INVALID_GEOMETRY_ID when not instanced
   std::uint32_t segment;
 };
 using GeometryLookup = const Geometry* (*)(void* user, unsigned instID, unsigned geomID);
-std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup,
-                                       void* user);
+std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup, void* user);
 
 // A triangle mesh of the profile swept in `slices` steps (2 * segments * slices triangles, vertices
 // on the exact circles), committed and ready to attach: the tessellated baseline. Throws

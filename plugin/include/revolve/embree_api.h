@@ -66,22 +66,46 @@ class RayQuery {
 
 #if REVOLVE_EMBREE_MAJOR == 4
   void intersect(RTCScene scene, RTCRayHit& rayHit) noexcept { rtcIntersect1(scene, &rayHit, &intersect_); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit4& rayHit) noexcept { rtcIntersect4(valid, scene, &rayHit, &intersect_); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit8& rayHit) noexcept { rtcIntersect8(valid, scene, &rayHit, &intersect_); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit16& rayHit) noexcept { rtcIntersect16(valid, scene, &rayHit, &intersect_); }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit4& rayHit) noexcept {
+    rtcIntersect4(valid, scene, &rayHit, &intersect_);
+  }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit8& rayHit) noexcept {
+    rtcIntersect8(valid, scene, &rayHit, &intersect_);
+  }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit16& rayHit) noexcept {
+    rtcIntersect16(valid, scene, &rayHit, &intersect_);
+  }
   void occluded(RTCScene scene, RTCRay& ray) noexcept { rtcOccluded1(scene, &ray, &occluded_); }
-  void occluded(const int* valid, RTCScene scene, RTCRay4& ray) noexcept { rtcOccluded4(valid, scene, &ray, &occluded_); }
-  void occluded(const int* valid, RTCScene scene, RTCRay8& ray) noexcept { rtcOccluded8(valid, scene, &ray, &occluded_); }
-  void occluded(const int* valid, RTCScene scene, RTCRay16& ray) noexcept { rtcOccluded16(valid, scene, &ray, &occluded_); }
+  void occluded(const int* valid, RTCScene scene, RTCRay4& ray) noexcept {
+    rtcOccluded4(valid, scene, &ray, &occluded_);
+  }
+  void occluded(const int* valid, RTCScene scene, RTCRay8& ray) noexcept {
+    rtcOccluded8(valid, scene, &ray, &occluded_);
+  }
+  void occluded(const int* valid, RTCScene scene, RTCRay16& ray) noexcept {
+    rtcOccluded16(valid, scene, &ray, &occluded_);
+  }
 #else
   void intersect(RTCScene scene, RTCRayHit& rayHit) noexcept { rtcIntersect1(scene, &context_, &rayHit); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit4& rayHit) noexcept { rtcIntersect4(valid, scene, &context_, &rayHit); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit8& rayHit) noexcept { rtcIntersect8(valid, scene, &context_, &rayHit); }
-  void intersect(const int* valid, RTCScene scene, RTCRayHit16& rayHit) noexcept { rtcIntersect16(valid, scene, &context_, &rayHit); }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit4& rayHit) noexcept {
+    rtcIntersect4(valid, scene, &context_, &rayHit);
+  }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit8& rayHit) noexcept {
+    rtcIntersect8(valid, scene, &context_, &rayHit);
+  }
+  void intersect(const int* valid, RTCScene scene, RTCRayHit16& rayHit) noexcept {
+    rtcIntersect16(valid, scene, &context_, &rayHit);
+  }
   void occluded(RTCScene scene, RTCRay& ray) noexcept { rtcOccluded1(scene, &context_, &ray); }
-  void occluded(const int* valid, RTCScene scene, RTCRay4& ray) noexcept { rtcOccluded4(valid, scene, &context_, &ray); }
-  void occluded(const int* valid, RTCScene scene, RTCRay8& ray) noexcept { rtcOccluded8(valid, scene, &context_, &ray); }
-  void occluded(const int* valid, RTCScene scene, RTCRay16& ray) noexcept { rtcOccluded16(valid, scene, &context_, &ray); }
+  void occluded(const int* valid, RTCScene scene, RTCRay4& ray) noexcept {
+    rtcOccluded4(valid, scene, &context_, &ray);
+  }
+  void occluded(const int* valid, RTCScene scene, RTCRay8& ray) noexcept {
+    rtcOccluded8(valid, scene, &context_, &ray);
+  }
+  void occluded(const int* valid, RTCScene scene, RTCRay16& ray) noexcept {
+    rtcOccluded16(valid, scene, &context_, &ray);
+  }
 #endif
 
  private:
@@ -94,7 +118,8 @@ class RayQuery {
 
 // Embree's ray for revolve's conventions: every mask bit set, no hit yet (no geometry, no
 // instance, as Embree requires before a query).
-inline RTCRayHit newRayHit(float ox, float oy, float oz, float dx, float dy, float dz, float tnear, float tfar) noexcept {
+inline RTCRayHit newRayHit(float ox, float oy, float oz, float dx, float dy, float dz, float tnear,
+                           float tfar) noexcept {
   RTCRayHit rayHit{};
   rayHit.ray.org_x = ox;
   rayHit.ray.org_y = oy;
@@ -107,7 +132,8 @@ inline RTCRayHit newRayHit(float ox, float oy, float oz, float dx, float dy, flo
   rayHit.ray.mask = ~0u;
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) rayHit.hit.instID[level] = RTC_INVALID_GEOMETRY_ID;
+  for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level)
+    rayHit.hit.instID[level] = RTC_INVALID_GEOMETRY_ID;
   return rayHit;
 }
 

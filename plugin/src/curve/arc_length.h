@@ -37,7 +37,8 @@ inline double hermiteAt(const double* table, std::uint32_t steps, double u) noex
   const double t = x - k, h = 1.0 / steps;
   const double t2 = t * t, t3 = t2 * t;
   const double* at = table + 2 * k;
-  return (2 * t3 - 3 * t2 + 1) * at[0] + (t3 - 2 * t2 + t) * h * at[1] + (-2 * t3 + 3 * t2) * at[2] + (t3 - t2) * h * at[3];
+  return (2 * t3 - 3 * t2 + 1) * at[0] + (t3 - 2 * t2 + t) * h * at[1] + (-2 * t3 + 3 * t2) * at[2] +
+         (t3 - t2) * h * at[3];
 }
 
 }  // namespace REVOLVE_ISA

@@ -7,7 +7,8 @@
 namespace revolve::detail {
 namespace {
 
-double adaptiveLength(const double r[4], const double z[4], double a, double b, double whole, double tolerance, int depth) {
+double adaptiveLength(const double r[4], const double z[4], double a, double b, double whole, double tolerance,
+                      int depth) {
   const double middle = 0.5 * (a + b);
   const double left = arcLengthBetween(r, z, a, middle), right = arcLengthBetween(r, z, middle, b);
   if (depth >= 30 || std::abs(left + right - whole) <= tolerance) return left + right;

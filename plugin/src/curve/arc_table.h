@@ -7,8 +7,8 @@
 namespace revolve::detail {
 
 struct ArcTable {
-  double length;                   // the part's arc length
-  std::uint32_t steps;             // equal steps of u
+  double length;                    // the part's arc length
+  std::uint32_t steps;              // equal steps of u
   std::vector<double> interleaved;  // arc length and its derivative |c'(u)| at u = k / steps
 };
 

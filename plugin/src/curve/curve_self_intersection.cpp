@@ -147,7 +147,8 @@ class Checker {
     Sub a1, a2, b1, b2;
     halve(a, a1, a2);
     halve(b, b1, b2);
-    return apartAtJoin(a2, b1) && apart(a1, b1, false, false) && apart(a1, b2, false, false) && apart(a2, b2, false, false);
+    return apartAtJoin(a2, b1) && apart(a1, b1, false, false) && apart(a1, b2, false, false) &&
+           apart(a2, b2, false, false);
   }
 
   double tiny_, margin_;

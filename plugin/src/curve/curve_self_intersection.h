@@ -20,8 +20,8 @@ struct PartPair {
 // last and first of a closed loop) are apart when their boxes meet only at the join, or when the
 // cones from the join holding their control hulls meet only there. Parts are subdivided (de
 // Casteljau) until one of these holds; parts still unresolved at 2^-40 of `extent`, or after 2^16
-// subdivisions of the pair (2^16 + 256 a part for the whole curve), count as touching. So a curve coming within about that distance of
-// itself, running that close to itself for a long stretch, or folding back on itself at a cusp, is
+// subdivisions of the pair (2^16 + 256 a part for the whole curve), count as touching. So a curve coming within about
+// that distance of itself, running that close to itself for a long stretch, or folding back on itself at a cusp, is
 // reported; a curve that crosses or touches itself always is. Returns one such pair.
 std::optional<PartPair> findCurveSelfIntersection(std::span<const MonotonePart> parts, double extent);
 

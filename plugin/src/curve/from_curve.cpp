@@ -145,7 +145,8 @@ class CurveWalk {
 
 Profile Profile::fromCurve(const Spline& curve, double tolerance) {
   if (!(tolerance > 0.0 && tolerance < HUGE_VAL)) {
-    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + ": must be a finite number > 0");
+    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) +
+                                ": must be a finite number > 0");
   }
   if (curve.kind() == SplineKind::linear) return Profile(curve.points());
   double extent = 0.0;
@@ -153,8 +154,9 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
   // Chords are computed in double: below 2^-40 of the extent a chord error is mostly rounding, and
   // the walk would crawl.
   if (tolerance < 0x1p-40 * extent) {
-    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) + " is below 2^-40 of the curve's extent " +
-                                detail::formatNumber(extent) + ", finer than double-precision chords resolve");
+    throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) +
+                                " is below 2^-40 of the curve's extent " + detail::formatNumber(extent) +
+                                ", finer than double-precision chords resolve");
   }
   const CurveWalk walk(curve);
   const double last = double(walk.pieces());
@@ -242,7 +244,8 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
     }
     parameters = std::move(kept);
     points = std::move(keptPoints);
-    const std::optional<detail::SegmentPair> pair = points.size() >= 2 ? detail::findSelfIntersection(points) : std::nullopt;
+    const std::optional<detail::SegmentPair> pair =
+        points.size() >= 2 ? detail::findSelfIntersection(points) : std::nullopt;
     if (!pair) break;
     std::vector<double> refined;
     refined.reserve(parameters.size() + 8);

@@ -34,9 +34,12 @@ std::string describePoint(std::size_t index, Point2 p) {
 // Whether the curve passes through point i (Bezier control points off the curve may have r < 0).
 bool onCurve(SplineKind kind, std::size_t i) {
   switch (kind) {
-    case SplineKind::quadratic: return i % 2 == 0;
-    case SplineKind::bezier: return i % 3 == 0;
-    default: return true;
+    case SplineKind::quadratic:
+      return i % 2 == 0;
+    case SplineKind::bezier:
+      return i % 3 == 0;
+    default:
+      return true;
   }
 }
 
@@ -45,7 +48,8 @@ void checkCount(SplineKind kind, std::size_t n) {
   const std::size_t last = n == 0 ? 0 : n - 1;
   if (n > Spline::kMaxPoints) {
     throw ProfileError(ProfileError::Rule::tooManyPoints, Spline::kMaxPoints,
-                       name + " spline has " + std::to_string(n) + " points; at most " + std::to_string(Spline::kMaxPoints) +
+                       name + " spline has " + std::to_string(n) + " points; at most " +
+                           std::to_string(Spline::kMaxPoints) +
                            " are supported (32-bit tree node indices over its monotone parts)");
   }
   switch (kind) {
@@ -73,7 +77,8 @@ void checkCount(SplineKind kind, std::size_t n) {
 
 void checkPoint(SplineKind kind, std::size_t index, Point2 p) {
   if (!std::isfinite(p.r) || !std::isfinite(p.z)) {
-    throw ProfileError(ProfileError::Rule::nonFinite, index, describePoint(index, p) + ": coordinates must be finite numbers");
+    throw ProfileError(ProfileError::Rule::nonFinite, index,
+                       describePoint(index, p) + ": coordinates must be finite numbers");
   }
   if (std::abs(p.r) > Profile::kMaxCoordinate || std::abs(p.z) > Profile::kMaxCoordinate) {
     throw ProfileError(ProfileError::Rule::outOfRange, index,
@@ -83,7 +88,8 @@ void checkPoint(SplineKind kind, std::size_t index, Point2 p) {
   }
   if (p.r < 0.0 && onCurve(kind, index)) {
     throw ProfileError(ProfileError::Rule::negativeRadius, index,
-                       describePoint(index, p) + ": r must be >= 0 at a point the curve passes through (r is the distance from the z axis)");
+                       describePoint(index, p) +
+                           ": r must be >= 0 at a point the curve passes through (r is the distance from the z axis)");
   }
 }
 
@@ -130,17 +136,27 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
       if (points_[i].r == points_[i + 1].r && points_[i].z == points_[i + 1].z) {
         throw ProfileError(ProfileError::Rule::segmentTooShort, i + 1,
                            describePoint(i + 1, points_[i + 1]) + " repeats point " + std::to_string(i) + "; a " +
-                               splineKindName(kind) + " spline is parametrised by its chords, which must have a length");
+                               splineKindName(kind) +
+                               " spline is parametrised by its chords, which must have a length");
       }
     }
   }
   const std::size_t step = kind == SplineKind::bezier ? 3 : kind == SplineKind::quadratic ? 2 : 1;
   switch (kind) {
-    case SplineKind::quadratic: bezier_ = detail::bezierOfQuadratic(points_); break;
-    case SplineKind::bezier: bezier_.assign(points_.begin(), points_.end()); break;
-    case SplineKind::catmullRom: bezier_ = detail::bezierOfCatmullRom(points_); break;
-    case SplineKind::natural: bezier_ = detail::bezierOfNatural(points_); break;
-    case SplineKind::linear: break;
+    case SplineKind::quadratic:
+      bezier_ = detail::bezierOfQuadratic(points_);
+      break;
+    case SplineKind::bezier:
+      bezier_.assign(points_.begin(), points_.end());
+      break;
+    case SplineKind::catmullRom:
+      bezier_ = detail::bezierOfCatmullRom(points_);
+      break;
+    case SplineKind::natural:
+      bezier_ = detail::bezierOfNatural(points_);
+      break;
+    case SplineKind::linear:
+      break;
   }
   const std::size_t pieces = pieceCount();
   for (std::size_t i = 0; i < pieces; ++i) pieceStart_.push_back(i * step);
@@ -158,8 +174,8 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     for (int k = 0; k < 4; ++k) {
       if (!(std::abs(c[k].r) <= Profile::kMaxCoordinate && std::abs(c[k].z) <= Profile::kMaxCoordinate)) {
         throw ProfileError(ProfileError::Rule::outOfRange, pieceStart_[i],
-                           describePiece(i) + " has a control point (r = " + formatNumber(c[k].r) + ", z = " +
-                               formatNumber(c[k].z) + ") beyond +-2^60");
+                           describePiece(i) + " has a control point (r = " + formatNumber(c[k].r) +
+                               ", z = " + formatNumber(c[k].z) + ") beyond +-2^60");
       }
       reach = std::max(reach, std::hypot(c[k].r - c[0].r, c[k].z - c[0].z));
     }
@@ -176,28 +192,33 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
       // within de Casteljau's rounding, 8 u max |r_i| (three levels of convex combinations): a
       // minimum no farther from the axis than that cannot be told from a touch.
       const double radius = detail::cubicAt(r, turns[k]);
-      const double rounding = 8.0 * detail::kUnitRoundoff * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
+      const double rounding =
+          8.0 * detail::kUnitRoundoff * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
       if (radius <= rounding) {
-        throw ProfileError(ProfileError::Rule::crossesAxis, pieceStart_[i],
-                           describePiece(i) + (radius < 0.0 ? " crosses the axis: r = " : " touches the axis: r = ") +
-                               formatNumber(radius) + (radius < 0.0 ? "" : " (zero within rounding)") + " at u = " +
-                               formatNumber(turns[k]) +
-                               "; the curve must keep r > 0 between the points it passes through (it may reach the axis "
-                               "only at such a point)");
+        throw ProfileError(
+            ProfileError::Rule::crossesAxis, pieceStart_[i],
+            describePiece(i) + (radius < 0.0 ? " crosses the axis: r = " : " touches the axis: r = ") +
+                formatNumber(radius) + (radius < 0.0 ? "" : " (zero within rounding)") +
+                " at u = " + formatNumber(turns[k]) +
+                "; the curve must keep r > 0 between the points it passes through (it may reach the axis "
+                "only at such a point)");
       }
     }
   }
 
   const std::vector<detail::MonotonePart> parts = detail::monotoneParts(bezier_, extent);
   if (parts.size() > 0xfffffff0u) {
-    throw ProfileError(ProfileError::Rule::tooManyPoints, points_.size() - 1, "spline has too many monotone parts for 32-bit tree indices");
+    throw ProfileError(ProfileError::Rule::tooManyPoints, points_.size() - 1,
+                       "spline has too many monotone parts for 32-bit tree indices");
   }
   if (const auto pair = detail::findCurveSelfIntersection(parts, extent)) {
     const std::size_t a = parts[pair->first].piece, b = parts[pair->second].piece;
     const std::string where = a == b ? describePiece(a) + " crosses or touches itself"
                                      : describePiece(a) + " and " + describePiece(b) + " cross or touch";
     throw ProfileError(ProfileError::Rule::selfIntersecting, pieceStart_[a],
-                       where + " (or come within 2^-40 of the extent, run that close for long, or fold back in a cusp); a profile must not cross or touch itself");
+                       where +
+                           " (or come within 2^-40 of the extent, run that close for long, or fold back in a cusp); a "
+                           "profile must not cross or touch itself");
   }
 
   const Point2 first = bezier_.front(), last = bezier_.back();

@@ -22,8 +22,8 @@ void appendHermite(std::vector<Point2>& out, Point2 p0, Point2 d0, Point2 p1, Po
 
 // Tridiagonal solve (Thomas): sub[i] x[i-1] + diag[i] x[i] + super[i] x[i+1] = rhs[i]. The systems
 // here are strictly diagonally dominant, so no pivoting is needed.
-std::vector<Point2> solveTridiagonal(const std::vector<double>& sub, std::vector<double> diag, const std::vector<double>& super,
-                                     std::vector<Point2> rhs) {
+std::vector<Point2> solveTridiagonal(const std::vector<double>& sub, std::vector<double> diag,
+                                     const std::vector<double>& super, std::vector<Point2> rhs) {
   const std::size_t n = diag.size();
   for (std::size_t i = 1; i < n; ++i) {
     const double w = sub[i] / diag[i - 1];
@@ -38,8 +38,9 @@ std::vector<Point2> solveTridiagonal(const std::vector<double>& sub, std::vector
 
 // The cyclic system (corner coefficients beta = row 0's of x[n-1], alpha = row n-1's of x[0]) by
 // Sherman-Morrison on the tridiagonal part (Press et al., Numerical Recipes, "cyclic"); n >= 3.
-std::vector<Point2> solveCyclic(const std::vector<double>& sub, const std::vector<double>& diag, const std::vector<double>& super,
-                                double alpha, double beta, const std::vector<Point2>& rhs) {
+std::vector<Point2> solveCyclic(const std::vector<double>& sub, const std::vector<double>& diag,
+                                const std::vector<double>& super, double alpha, double beta,
+                                const std::vector<Point2>& rhs) {
   const std::size_t n = diag.size();
   const double gamma = -diag[0];
   std::vector<double> modified = diag;
@@ -91,7 +92,8 @@ std::vector<Point2> bezierOfCatmullRom(std::span<const Point2> p) {
   // The tangent at point i from its neighbours (Barry-Goldman's pyramid differentiated at the knot):
   // (p_i - p_{i-1}) / d_{i-1} - (p_{i+1} - p_{i-1}) / (d_{i-1} + d_i) + (p_{i+1} - p_i) / d_i.
   const auto tangent = [](Point2 before, double dBefore, Point2 at, Point2 after, double dAfter) {
-    return (1.0 / dBefore) * (at - before) - (1.0 / (dBefore + dAfter)) * (after - before) + (1.0 / dAfter) * (after - at);
+    return (1.0 / dBefore) * (at - before) - (1.0 / (dBefore + dAfter)) * (after - before) +
+           (1.0 / dAfter) * (after - at);
   };
   std::vector<Point2> tangents(n);
   for (std::size_t i = 1; i < m; ++i) tangents[i] = tangent(p[i - 1], d[i - 1], p[i], p[i + 1], d[i]);

@@ -13,7 +13,8 @@ class Describer {
   Describer(const Profile& profile, std::string_view pointName) : profile_(profile), pointName_(pointName) {}
   std::string point(std::size_t k) const {
     const Point2 p = profile_.points()[k];
-    return pointName_ + " " + std::to_string(profile_.sourceIndex()[k]) + " (r = " + formatNumber(p.r) + ", z = " + formatNumber(p.z) + ")";
+    return pointName_ + " " + std::to_string(profile_.sourceIndex()[k]) + " (r = " + formatNumber(p.r) +
+           ", z = " + formatNumber(p.z) + ")";
   }
   std::string segment(std::size_t k) const { return "the segment from " + point(k) + " to " + point(k + 1); }
 
@@ -37,7 +38,8 @@ std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profil
   const auto horizontal = [&](std::size_t k) { return float(p[k].z) == float(p[k + 1].z); };
   const auto isHorizontal = [&](std::size_t k) {
     return describe.segment(k) +
-           (p[k].z == p[k + 1].z ? " is horizontal" : " is horizontal in single precision (Embree's vertices are floats)") +
+           (p[k].z == p[k + 1].z ? " is horizontal"
+                                 : " is horizontal in single precision (Embree's vertices are floats)") +
            ": a linear cone curve has flat discs only at its two ends, each a whole disc centred on the axis, so a "
            "horizontal segment can only be the first one starting on the axis or the last one ending there";
   };
@@ -47,7 +49,8 @@ std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profil
   std::size_t first = 0, last = n - 1;  // the cones are the segments between points first and last
   bool anyCone = false;
   for (std::size_t k = 0; k + 1 < n; ++k) anyCone = anyCone || !horizontal(k);
-  if (!anyCone) return "the profile is only flat discs and rings: a linear cone curve needs a segment that rises or falls";
+  if (!anyCone)
+    return "the profile is only flat discs and rings: a linear cone curve needs a segment that rises or falls";
   if (!loop) {
     if (horizontal(0)) {
       if (p[0].r != 0.0) return isHorizontal(0);
@@ -55,7 +58,8 @@ std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profil
       first = 1;
     } else if (p[0].r != 0.0) {
       return "the profile ends at " + describe.point(0) +
-             ", off the axis: a linear cone curve closes each end with a flat disc, which the profile does not have there";
+             ", off the axis: a linear cone curve closes each end with a flat disc, which the profile does not have "
+             "there";
     }
     if (horizontal(n - 2)) {
       if (p[n - 1].r != 0.0) return isHorizontal(n - 2);
@@ -63,7 +67,8 @@ std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profil
       last = n - 2;
     } else if (p[n - 1].r != 0.0) {
       return "the profile ends at " + describe.point(n - 1) +
-             ", off the axis: a linear cone curve closes each end with a flat disc, which the profile does not have there";
+             ", off the axis: a linear cone curve closes each end with a flat disc, which the profile does not have "
+             "there";
     }
   }
   for (std::size_t k = first; k < last; ++k) {

@@ -7,12 +7,11 @@
 // and, when the flags say the segment has no left (right) neighbour, a flat disc of radius r0 (r1)
 // in that plane. With p0, p1 on the z axis a segment is the profile segment's truncated cone exactly;
 // a horizontal profile segment (p1 = p0, in the floats Embree stores) is no cone at all, and a disc
-// is always whole (centred on the axis). So a profile is one cone curve when every segment rises or falls, except that a first
-// or last segment running horizontally from the axis is that end's disc; and each end is on the
-// axis (a disc of radius 0 closes it), such a disc, or the profile is a loop (no ends). A point on
-// the axis between segments is two cones meeting at their apex: no restriction. The kernel assumes
-// a unit ray direction (its quadratic's leading coefficient leaves out |d|^2): longer or shorter
-// directions give hits off the surface.
+// is always whole (centred on the axis). So a profile is one cone curve when every segment rises or falls, except that
+// a first or last segment running horizontally from the axis is that end's disc; and each end is on the axis (a disc of
+// radius 0 closes it), such a disc, or the profile is a loop (no ends). A point on the axis between segments is two
+// cones meeting at their apex: no restriction. The kernel assumes a unit ray direction (its quadratic's leading
+// coefficient leaves out |d|^2): longer or shorter directions give hits off the surface.
 #pragma once
 
 #include <revolve/embree.h>
@@ -26,15 +25,16 @@
 namespace revolve::detail {
 
 struct ConeCurveLayout {
-  std::vector<float> vertices;             // x, y, z, radius per vertex; x = y = 0
-  std::vector<std::uint32_t> firstVertex;  // per cone: the index of its first vertex
-  std::vector<std::uint8_t> flags;         // per cone: RTC_CURVE_FLAG_NEIGHBOR_LEFT | _RIGHT
-  std::vector<std::int8_t> rising;         // per cone: +1 when z grows along the profile, else -1
-  std::uint32_t firstSegment = 0;          // the profile segment of cone 0 (1 when segment 0 is a disc)
+  std::vector<float> vertices;              // x, y, z, radius per vertex; x = y = 0
+  std::vector<std::uint32_t> firstVertex;   // per cone: the index of its first vertex
+  std::vector<std::uint8_t> flags;          // per cone: RTC_CURVE_FLAG_NEIGHBOR_LEFT | _RIGHT
+  std::vector<std::int8_t> rising;          // per cone: +1 when z grows along the profile, else -1
+  std::uint32_t firstSegment = 0;           // the profile segment of cone 0 (1 when segment 0 is a disc)
   bool startDisc = false, endDisc = false;  // the profile's first / last segment is the curve's end disc
 };
 
 // The layout, or why the profile cannot be one linear cone curve (naming the points concerned).
-std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile, std::string_view pointName = "profile point");
+std::variant<ConeCurveLayout, std::string> layOutConeCurve(const Profile& profile,
+                                                           std::string_view pointName = "profile point");
 
 }  // namespace revolve::detail

@@ -9,9 +9,9 @@
 #include "shape/queries.h"
 
 #include <cstring>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace revolve {
 
@@ -93,7 +93,8 @@ Geometry::Geometry(RTCDevice device, const Shape& shape, Options options)
   // Before the first revolve geometry can be traced: whether argument filters can be reached.
   detail::checkArgumentsReachable(device);
   geometry_ = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-  if (geometry_ == nullptr) throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_USER) failed: " + deviceError(device));
+  if (geometry_ == nullptr)
+    throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_USER) failed: " + deviceError(device));
   rtcSetGeometryUserPrimitiveCount(geometry_, 1);
   rtcSetGeometryUserData(geometry_, payload_.get());
   rtcSetGeometryBoundsFunction(geometry_, boundsCallback, nullptr);
@@ -166,8 +167,8 @@ RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std
     throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_TRIANGLE) failed: " + deviceError(device));
   }
   const std::size_t vertexCount = mesh.vertices.size() / 3, triangleCount = mesh.indices.size() / 3;
-  void* vertices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                           3 * sizeof(float), vertexCount);
+  void* vertices =
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount);
   void* indices = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                           3 * sizeof(std::uint32_t), triangleCount);
   if (vertices == nullptr || indices == nullptr) {
@@ -196,15 +197,15 @@ ConeCurveGeometry::ConeCurveGeometry(RTCDevice device, const Profile& profile) {
     throw std::runtime_error("rtcNewGeometry(RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE) failed: " + deviceError(device));
   }
   const std::size_t vertexCount = layout.vertices.size() / 4, coneCount = layout.firstVertex.size();
-  void* vertices = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-                                           vertexCount);
-  void* indices = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(std::uint32_t),
-                                          coneCount);
+  void* vertices =
+      rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), vertexCount);
+  void* indices =
+      rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(std::uint32_t), coneCount);
   void* flags = rtcSetNewGeometryBuffer(geometry_, RTC_BUFFER_TYPE_FLAGS, 0, RTC_FORMAT_UCHAR, 1, coneCount);
   if (vertices == nullptr || indices == nullptr || flags == nullptr) {
     rtcReleaseGeometry(geometry_);
-    throw std::runtime_error("allocating a cone curve of " + std::to_string(coneCount) + " cones failed: " +
-                             deviceError(device));
+    throw std::runtime_error("allocating a cone curve of " + std::to_string(coneCount) +
+                             " cones failed: " + deviceError(device));
   }
   std::memcpy(vertices, layout.vertices.data(), layout.vertices.size() * sizeof(float));
   std::memcpy(indices, layout.firstVertex.data(), coneCount * sizeof(std::uint32_t));

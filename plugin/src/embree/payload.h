@@ -12,10 +12,10 @@
 namespace revolve::detail {
 
 struct GeometryPayload {
-  const ShapeImpl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
-  bool intersectFilter = false;   // the geometry has its own intersection filter
-  bool occlusionFilter = false;   // ... its own occlusion filter
-  bool argumentFilter = false;    // enableFilterFunctionFromArguments (Embree 4)
+  const ShapeImpl* shape;        // the heap part of the Shape: it stays put when the Shape is moved
+  bool intersectFilter = false;  // the geometry has its own intersection filter
+  bool occlusionFilter = false;  // ... its own occlusion filter
+  bool argumentFilter = false;   // enableFilterFunctionFromArguments (Embree 4)
   std::atomic<std::uint64_t> rays{0}, nodesVisited{0}, shellTests{0}, quadratics{0};
 
   void add(const Stats& stats) noexcept {

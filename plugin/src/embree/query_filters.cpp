@@ -21,7 +21,8 @@ struct Probe {
 template <class PublicArguments>
 const void* fieldBehind(const PublicArguments* args) noexcept {
   const void* arguments;
-  std::memcpy(&arguments, reinterpret_cast<const char*>(args) + offsetof(EmbreeCallbackRecord<PublicArguments>, arguments),
+  std::memcpy(&arguments,
+              reinterpret_cast<const char*>(args) + offsetof(EmbreeCallbackRecord<PublicArguments>, arguments),
               sizeof arguments);
   return arguments;
 }

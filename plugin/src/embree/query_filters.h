@@ -49,7 +49,8 @@ template <class PublicArguments>
 inline const RTCIntersectArguments* queryArguments(const PublicArguments* args) noexcept {
   if (!argumentsReachable.load(std::memory_order_relaxed)) return nullptr;
   const RTCIntersectArguments* arguments;
-  std::memcpy(&arguments, reinterpret_cast<const char*>(args) + offsetof(EmbreeCallbackRecord<PublicArguments>, arguments),
+  std::memcpy(&arguments,
+              reinterpret_cast<const char*>(args) + offsetof(EmbreeCallbackRecord<PublicArguments>, arguments),
               sizeof arguments);
   return arguments;
 }
@@ -77,16 +78,18 @@ inline void enableArgumentFilter(RTCGeometry geometry, bool enable) noexcept {
 
 // Offers the candidate in `filter` to the geometry's filter, then, if it is still valid, to the
 // query's argument filter: Embree's own order for built-in geometries (kernels/geometry/filter.h).
-inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args, const RTCFilterFunctionNArguments* filter,
-                                    const GeometryPayload& payload, unsigned lane) noexcept {
+inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
+                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload& payload,
+                                    unsigned lane) noexcept {
   if (payload.intersectFilter) {
     rtcInvokeIntersectFilterFromGeometry(args, filter);
     if (filter->valid[lane] == 0) return;
   }
   if (const RTCFilterFunctionN query = argumentFilter(args, payload)) query(filter);
 }
-inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args, const RTCFilterFunctionNArguments* filter,
-                                    const GeometryPayload& payload, unsigned lane) noexcept {
+inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
+                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload& payload,
+                                    unsigned lane) noexcept {
   if (payload.occlusionFilter) {
     rtcInvokeOccludedFilterFromGeometry(args, filter);
     if (filter->valid[lane] == 0) return;
@@ -107,12 +110,14 @@ inline bool occlusionFiltered(const RTCOccludedFunctionNArguments* args, const G
 }
 // Embree 3 calls the geometry's filter, then the context's (passing it the very `args` the callback
 // received: Embree reads a hidden field behind it).
-inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args, const RTCFilterFunctionNArguments* filter,
-                                    const GeometryPayload&, unsigned) noexcept {
+inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
+                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload&,
+                                    unsigned) noexcept {
   rtcFilterIntersection(args, filter);
 }
-inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args, const RTCFilterFunctionNArguments* filter,
-                                    const GeometryPayload&, unsigned) noexcept {
+inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
+                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload&,
+                                    unsigned) noexcept {
   rtcFilterOcclusion(args, filter);
 }
 

@@ -138,7 +138,8 @@ struct FilteredAny {
     float& tfar = RTCRayN_tfar(args->ray, N, lane);
     const float previous = tfar;
     tfar = hit.t;
-    const RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context, args->ray, view.hits(), N};
+    const RTCFilterFunctionNArguments filter{view.valid, args->geometryUserPtr, args->context,
+                                             args->ray,  view.hits(),           N};
     offerToOcclusionFilters(args, &filter, payload, lane);
     tfar = previous;  // the caller sets -inf on acceptance
     return view.valid[lane] == -1;
@@ -176,8 +177,8 @@ inline RayLanes rayLanes(RTCRayN* rays, unsigned N, unsigned first) noexcept {
 }
 
 // Writes a hit into lane i of the packet.
-inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, float t, float nx, float ny, float nz, float u,
-                     float v, std::uint32_t segment) noexcept {
+inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, float t, float nx, float ny, float nz,
+                     float u, float v, std::uint32_t segment) noexcept {
   const unsigned N = args->N;
   RTCRayN_tfar(RTCRayHitN_RayN(args->rayhit, N), N, i) = t;
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, N);
@@ -253,7 +254,8 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Ge
         const Hit hit = surfaceHit(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment);
         writeHit(args, f.lane, hit.t, hit.normal.x, hit.normal.y, hit.normal.z, hit.u, hit.v, hit.segment);
       } else {
-        writeHit(args, f.lane, out.t[lane], out.nx[lane], out.ny[lane], out.nz[lane], out.u[lane], out.v[lane], f.segment);
+        writeHit(args, f.lane, out.t[lane], out.nx[lane], out.ny[lane], out.nz[lane], out.u[lane], out.v[lane],
+                 f.segment);
       }
     }
   }

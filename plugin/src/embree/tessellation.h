@@ -9,8 +9,8 @@
 namespace revolve::detail {
 
 struct TriangleMesh {
-  std::vector<float> vertices;          // x, y, z per vertex
-  std::vector<std::uint32_t> indices;   // three per triangle
+  std::vector<float> vertices;         // x, y, z per vertex
+  std::vector<std::uint32_t> indices;  // three per triangle
 };
 
 // Ring i holds point i of the profile at `slices` azimuths 2 pi j / slices, on the exact circle;

@@ -13,8 +13,10 @@ bool cpuRunsAvx2() noexcept {
 
 const QueryKernels* queryKernelsFor(Isa isa) noexcept {
   switch (isa) {
-    case Isa::sse2: return &queryKernelsSse2;
-    case Isa::avx2: return cpuRunsAvx2() ? &queryKernelsAvx2 : nullptr;
+    case Isa::sse2:
+      return &queryKernelsSse2;
+    case Isa::avx2:
+      return cpuRunsAvx2() ? &queryKernelsAvx2 : nullptr;
   }
   return nullptr;
 }

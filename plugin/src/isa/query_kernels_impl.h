@@ -35,13 +35,15 @@ bool anyHit(const detail::ShapeImpl& shape, const Ray& ray, Stats& stats) noexce
 
 inline std::optional<Hit> intersectEntry(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept {
   Stats unused;
-  if (shape.curved()) return stats != nullptr ? nearestHit<true, true>(shape, ray, *stats) : nearestHit<false, true>(shape, ray, unused);
+  if (shape.curved())
+    return stats != nullptr ? nearestHit<true, true>(shape, ray, *stats) : nearestHit<false, true>(shape, ray, unused);
   return stats != nullptr ? nearestHit<true, false>(shape, ray, *stats) : nearestHit<false, false>(shape, ray, unused);
 }
 
 inline bool occludedEntry(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept {
   Stats unused;
-  if (shape.curved()) return stats != nullptr ? anyHit<true, true>(shape, ray, *stats) : anyHit<false, true>(shape, ray, unused);
+  if (shape.curved())
+    return stats != nullptr ? anyHit<true, true>(shape, ray, *stats) : anyHit<false, true>(shape, ray, unused);
   return stats != nullptr ? anyHit<true, false>(shape, ray, *stats) : anyHit<false, false>(shape, ray, unused);
 }
 

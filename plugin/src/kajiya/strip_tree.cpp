@@ -36,8 +36,8 @@ StripTree buildStripTree(std::span<const Point2> points) {
     work.pop_back();
     const std::span<const Point2> run = points.subspan(item.first, item.last - item.first + 1);
     StripNode& node = tree.nodes[item.node];
-    const auto [zLow, zHigh] = std::minmax_element(run.begin(), run.end(),
-                                                   [](const Point2& a, const Point2& b) { return a.z < b.z; });
+    const auto [zLow, zHigh] =
+        std::minmax_element(run.begin(), run.end(), [](const Point2& a, const Point2& b) { return a.z < b.z; });
     node.zLow = zLow->z;
     node.zHigh = zHigh->z;
     const Chord chord = chordOf(run);

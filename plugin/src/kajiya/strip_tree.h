@@ -22,9 +22,9 @@
 namespace revolve::detail {
 
 struct StripNode {
-  double zLow, zHigh;  // z extent of the run (copies of vertex heights)
-  Band across;         // the strip's width: normal to the chord
-  Band along;          // the strip's length: along the chord
+  double zLow, zHigh;     // z extent of the run (copies of vertex heights)
+  Band across;            // the strip's width: normal to the chord
+  Band along;             // the strip's length: along the chord
   std::uint32_t skip;     // pre-order index of the node after this subtree
   std::uint32_t segment;  // leaf: the segment; inner node: kInner (its children follow it)
   static constexpr std::uint32_t kInner = 0xffffffffu;

@@ -201,10 +201,12 @@ inline int signChanges(const Interval& interval) noexcept {
 // places the crossing by the radius instead; of that chord's roots, the one nearest planeS(z(u)).
 // `span`: the part's parameter range the view covers (a restriction's is narrower), so that the
 // chord is 2^-29 of the part whatever the view.
-inline double rayParameterAt(const PartView& view, double u, double span, double lo, double hi, double sTolerance) noexcept {
+inline double rayParameterAt(const PartView& view, double u, double span, double lo, double hi,
+                             double sTolerance) noexcept {
   double s;
   view.at(u, s);
-  const double zMagnitude = std::max({std::abs(view.z[0]), std::abs(view.z[1]), std::abs(view.z[2]), std::abs(view.z[3])});
+  const double zMagnitude =
+      std::max({std::abs(view.z[0]), std::abs(view.z[1]), std::abs(view.z[2]), std::abs(view.z[3])});
   if (!(8.0 * kUnitRoundoff * zMagnitude * std::abs(view.ray.invDz) > sTolerance)) return s;
   const double half = 0x1p-30 / span;
   const double u0 = std::max(0.0, u - half), u1 = std::min(1.0, u + half);
@@ -296,7 +298,8 @@ inline void addApexTouches(const MeridianRay& ray, const CurvePart& part, double
 // All hits of the ray with the part with lo <= s <= hi, in increasing order (kFirstOnly: the first).
 // `sphereRadius`: the shape's bounding radius R, the scale of the conditioning threshold.
 template <bool kFirstOnly = false>
-inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double lo, double hi, double sphereRadius) noexcept {
+inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double lo, double hi,
+                           double sphereRadius) noexcept {
   using namespace curve_hits_internal;
   CurveHits hits;
   const Point2 p0{part.r[0], part.z[0]}, p3{part.r[3], part.z[3]};
@@ -316,7 +319,8 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
     bracketHigh = std::min(std::max(s0, s3), hi);
     if (!(bracketLow <= bracketHigh)) return hits;
     hits.solved = true;
-    const PartView view{ray, {part.r[0], part.r[1], part.r[2], part.r[3]}, {part.z[0], part.z[1], part.z[2], part.z[3]}};
+    const PartView view{
+        ray, {part.r[0], part.r[1], part.r[2], part.r[3]}, {part.z[0], part.z[1], part.z[2], part.z[3]}};
     const double sTolerance = 0x1p-32 * sphereRadius;  // far below the float t the caller gets
     if (std::abs(s3 - s0) <= 0x1p8 * sphereRadius || (std::min(s0, s3) >= lo && std::max(s0, s3) <= hi)) {
       isolateRoots<kFirstOnly>(view, lo, hi, 0.0, 1.0, sTolerance, hits);
@@ -327,7 +331,9 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
       // slope there, and by 2^-20 of the span. Roots found outside [lo, hi] are dropped.
       const double uLo = monotoneParameter(part.z, ray.zAt(lo)), uHi = monotoneParameter(part.z, ray.zAt(hi));
       const double span = std::abs(uHi - uLo);
-      const double zError = 8.0 * kUnitRoundoff * std::max({std::abs(part.z[0]), std::abs(part.z[1]), std::abs(part.z[2]), std::abs(part.z[3])});
+      const double zError =
+          8.0 * kUnitRoundoff *
+          std::max({std::abs(part.z[0]), std::abs(part.z[1]), std::abs(part.z[2]), std::abs(part.z[3])});
       const double slope = std::abs(cubicDerivative(part.z, 0.5 * (uLo + uHi)));
       const double widen = 0x1p-20 * span + 0x1p-52 + (slope > 0.0 ? 4.0 * zError / slope : 1.0);
       const double ua = std::max(0.0, std::min(uLo, uHi) - widen);
@@ -339,7 +345,9 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
         const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez;
         for (int i = 0; i < chord.count; ++i) {
           const double px = ray.ox + chord.s[i] * ray.dx, py = ray.oy + chord.s[i] * ray.dy;
-          const double along = length2 > 0.0 ? ((std::sqrt(px * px + py * py) - a.r) * er + (ray.zAt(chord.s[i]) - a.z) * ez) / length2 : 0.0;
+          const double along =
+              length2 > 0.0 ? ((std::sqrt(px * px + py * py) - a.r) * er + (ray.zAt(chord.s[i]) - a.z) * ez) / length2
+                            : 0.0;
           hits.s[hits.count] = chord.s[i];
           hits.u[hits.count++] = ua + std::clamp(along, 0.0, 1.0) * (ub - ua);
         }
@@ -364,7 +372,8 @@ inline CurveHits curveHits(const MeridianRay& ray, const CurvePart& part, double
       const double rho2Lo = ray.rho2At(lo), rho2Hi = ray.rho2At(hi);
       const Roots roots = bracketedRoots<kFirstOnly>(g, lo - ray.sAxis, hi - ray.sAxis, rho2Lo < R2, rho2Hi < R2,
                                                      EndsOnSurface{rho2Lo == R2, rho2Hi == R2});
-      for (int i = 0; i < roots.count; ++i) hits.s[hits.count] = std::clamp(ray.sAxis + roots.x[i], lo, hi), hits.u[hits.count++] = u;
+      for (int i = 0; i < roots.count; ++i)
+        hits.s[hits.count] = std::clamp(ray.sAxis + roots.x[i], lo, hi), hits.u[hits.count++] = u;
       hits.solved = true;
     }
   }

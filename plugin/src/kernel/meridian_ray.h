@@ -43,16 +43,16 @@ struct MeridianRay {
   // Re-centred ray in the local frame: point(s) = origin + s * dir, |dir| = 1, s in object units.
   double ox, oy, oz;
   double dx, dy, dz;
-  double t0;        // caller's parameter of `origin`
-  double tScale;    // caller's |direction|: caller t = t0 + s / tScale
-  double lo, hi;    // active range of s: [tnear, tfar] clipped to the bounding sphere (finite)
-  double a;         // dx^2 + dy^2: rho^2(s) = a s^2 + 2 b s + c
-  double cross;     // ox dy - oy dx: a * (distance of the ray's line from the axis)^2 = cross^2
-  double sAxis;     // s of the closest approach to the axis (when a > 0)
-  double invDz;     // 1 / dz (when dz != 0)
-  bool inPlane;     // dz == 0: the ray stays in the plane z = oz
-  double invA;      // 1 / a (when a > 0)
-  double beta;      // cross^2 / a: rho^2 at the closest approach to the axis (when a > 0)
+  double t0;      // caller's parameter of `origin`
+  double tScale;  // caller's |direction|: caller t = t0 + s / tScale
+  double lo, hi;  // active range of s: [tnear, tfar] clipped to the bounding sphere (finite)
+  double a;       // dx^2 + dy^2: rho^2(s) = a s^2 + 2 b s + c
+  double cross;   // ox dy - oy dx: a * (distance of the ray's line from the axis)^2 = cross^2
+  double sAxis;   // s of the closest approach to the axis (when a > 0)
+  double invDz;   // 1 / dz (when dz != 0)
+  bool inPlane;   // dz == 0: the ray stays in the plane z = oz
+  double invA;    // 1 / a (when a > 0)
+  double beta;    // cross^2 / a: rho^2 at the closest approach to the axis (when a > 0)
   // Rounding bounds, from the set-up's magnitudes (|origin| <= R, |s| <= R within [lo, hi]):
   // each of px, py of a point has absolute error <= 3 u R and magnitude <= 2 R, so
   // rho^2 = px^2 + py^2 carries < 40 u R^2; rho2Slack = 64 u R^2 bounds it with room.

@@ -52,8 +52,8 @@ inline unsigned setUpMeridianRays(const ShapeFrame& frame, const RayLanes& in, M
   const LaneMask inPlane = Dz == zero;
   const Lanes invDz = select(inPlane, zero, length / Dz);
   const unsigned inPlaneBits = bits(inPlane);
-  const Lanes lineSlack = splat(2.0 * kUnitRoundoff) * (abs(ox) + abs(oy) + abs(originZ) + splat(std::abs(frame.zCentre)) +
-                                                        abs(tCentre) * length);
+  const Lanes lineSlack = splat(2.0 * kUnitRoundoff) *
+                          (abs(ox) + abs(oy) + abs(originZ) + splat(std::abs(frame.zCentre)) + abs(tCentre) * length);
 
   alignas(32) double fields[17][kLanes];
   store(fields[0], qx), store(fields[1], qy), store(fields[2], qz), store(fields[3], dx), store(fields[4], dy);

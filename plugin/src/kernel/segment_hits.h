@@ -33,7 +33,7 @@ inline namespace REVOLVE_ISA {
 
 struct SegmentHits {
   int count = 0;
-  double s[2];         // increasing
+  double s[2];          // increasing
   bool solved = false;  // whether a quadratic was set up (the ray met the segment's slab)
 };
 
@@ -60,7 +60,8 @@ inline void addApexTouch(const MeridianRay& ray, double zApex, double sLow, doub
   const double ax = -ray.ox, ay = -ray.oy, az = zApex - ray.oz;  // apex - origin
   const double tolerance = ray.lineSlack + 4.0 * kUnitRoundoff * (std::abs(ax) + std::abs(ay) + std::abs(az));
   const double widen = (tolerance + 8.0 * kUnitRoundoff * std::abs(az)) * std::abs(ray.invDz);
-  const double s = std::clamp(ax * ray.dx + ay * ray.dy + az * ray.dz, std::max(sLow - widen, lo), std::min(sHigh + widen, hi));
+  const double s =
+      std::clamp(ax * ray.dx + ay * ray.dy + az * ray.dz, std::max(sLow - widen, lo), std::min(sHigh + widen, hi));
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s) - zApex;
   if (px * px + py * py + pz * pz <= tolerance * tolerance) hits.s[hits.count++] = s;
 }
@@ -83,9 +84,11 @@ inline double outwardAt(const MeridianRay& ray, double s, Point2 p0, double er, 
 // from quantities themselves within 3 roundings of their terms (gamma_9 < 10 u of the terms'
 // magnitudes): 32 u bounds it with room. A ray parallel to a generator a few u R away is then taken
 // as running along it too, which moves its hit by no more than that distance.
-inline bool alongSurface(const MeridianRay& ray, const Quadratic& g, double m, Point2 p0, double er, double ez) noexcept {
+inline bool alongSurface(const MeridianRay& ray, const Quadratic& g, double m, Point2 p0, double er,
+                         double ez) noexcept {
   const double ez2 = ez * ez;
-  if (!(std::abs(g.A) <= 32.0 * kUnitRoundoff * (ez2 * ray.a + er * er * ray.dz * ray.dz))) return false;  // the usual case
+  if (!(std::abs(g.A) <= 32.0 * kUnitRoundoff * (ez2 * ray.a + er * er * ray.dz * ray.dz)))
+    return false;  // the usual case
   const double px = ray.ox + m * ray.dx, py = ray.oy + m * ray.dy;
   const double bTerms = std::abs(px * ray.dx) + std::abs(py * ray.dy);
   const double lTerms = std::abs(p0.r * ez) + std::abs((ray.zAt(m) - p0.z) * er) + std::abs(ray.zAt(m) * er);

@@ -41,7 +41,8 @@ inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax
 }
 
 // The band test over [s0, s1] given rho at both ends.
-inline bool bandPasses(const MeridianRay& ray, const Band& band, double s0, double s1, double rho0, double rho1) noexcept {
+inline bool bandPasses(const MeridianRay& ray, const Band& band, double s0, double s1, double rho0,
+                       double rho1) noexcept {
   const double f0 = band.nr * rho0 + band.nz * ray.zAt(s0), f1 = band.nr * rho1 + band.nz * ray.zAt(s1);
   if (std::max(f0, f1) < band.wLow - ray.bandMargin) return false;  // below the band throughout
   if (std::min(f0, f1) <= band.wHigh + ray.bandMargin) return true;

@@ -43,7 +43,8 @@ inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interv
                            bool rangeSearch, const MeridianRay& ray, double& hi, VisitSegment&& visitSegment,
                            Stats& stats) noexcept {
   using namespace interval_search_internal;
-  const ImplicitShell* shells = tree.implicitShells.empty() ? nullptr : tree.implicitShells.data() + interval.shellOffset;
+  const ImplicitShell* shells =
+      tree.implicitShells.empty() ? nullptr : tree.implicitShells.data() + interval.shellOffset;
   const double lo = ray.lo, qLo = ray.rho2At(lo);
   double qHi = ray.rho2At(hi), qHiAt = hi;  // rho^2 at hi, refreshed whenever a hit lowers hi
 
@@ -87,8 +88,12 @@ inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interv
   // can hold hits), so a ray following one path copies no node through memory.
   Node stack[64];  // depth + 1 entries at most (see searchMibit)
   int top = 0;
-  Node node{1, 0, interval.leaves, plane(MibitTree::leafVertex(interval, 0)),
-            plane(MibitTree::leafVertex(interval, interval.leaves)), lo};
+  Node node{1,
+            0,
+            interval.leaves,
+            plane(MibitTree::leafVertex(interval, 0)),
+            plane(MibitTree::leafVertex(interval, interval.leaves)),
+            lo};
   for (;;) {
     bool descended = false;
     if (node.entry <= hi) {

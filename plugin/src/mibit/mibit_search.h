@@ -69,7 +69,8 @@ inline void searchMibit(const MibitTree& tree, std::span<const Point2> points, b
       const MibitNode& node = tree.nodes[current.node];
       if constexpr (kCount) ++stats.nodesVisited;
       if (node.kind == MibitNode::Kind::interval) {
-        if (searchInterval<kCount>(tree, tree.intervals[node.first], points, rangeSearch, ray, hi, visitSegment, stats)) {
+        if (searchInterval<kCount>(tree, tree.intervals[node.first], points, rangeSearch, ray, hi, visitSegment,
+                                   stats)) {
           return;
         }
       } else if (node.kind == MibitNode::Kind::segments) {

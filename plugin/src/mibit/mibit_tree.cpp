@@ -12,7 +12,6 @@
 namespace revolve::detail {
 namespace {
 
-
 struct Extent {
   double zLow, zHigh, rMin, rMax;
 };
@@ -54,7 +53,7 @@ bool preferCylinder(const Extent& extent, const Band& band) {
   const double cylinderWidth = extent.rMax - extent.rMin;
   const double cylinderArea = cylinderWidth * height;
   const double cylinderChord = meanChord(cylinderArea, 2.0 * (cylinderWidth + height));
-  if (!(band.nr > 0.0)) return true;  // a horizontal band is only a second z slab
+  if (!(band.nr > 0.0)) return true;                            // a horizontal band is only a second z slab
   const double coneWidth = (band.wHigh - band.wLow) / band.nr;  // measured along r
   const double coneArea = coneWidth * height;
   const double coneChord = meanChord(coneArea, 2.0 * (coneWidth + height / band.nr));
@@ -63,9 +62,12 @@ bool preferCylinder(const Extent& extent, const Band& band) {
 
 NodeShell chooseShell(ShellKind kind, const Extent& extent, const Band& band) {
   switch (kind) {
-    case ShellKind::cylinder: return NodeShell::cylinder;
-    case ShellKind::cone: return NodeShell::cone;
-    case ShellKind::hybrid: return preferCylinder(extent, band) ? NodeShell::cylinder : NodeShell::cone;
+    case ShellKind::cylinder:
+      return NodeShell::cylinder;
+    case ShellKind::cone:
+      return NodeShell::cone;
+    case ShellKind::hybrid:
+      return preferCylinder(extent, band) ? NodeShell::cylinder : NodeShell::cone;
   }
   return NodeShell::cylinder;
 }
@@ -134,8 +136,10 @@ class Builder {
     fillImplicit(interval, 1, 0, interval.leaves);
   }
 
-  void fillImplicit(const MonotoneInterval& interval, std::uint64_t heap, std::uint64_t leafBegin, std::uint64_t leafEnd) {
-    const std::uint32_t first = MibitTree::leafVertex(interval, leafBegin), last = MibitTree::leafVertex(interval, leafEnd);
+  void fillImplicit(const MonotoneInterval& interval, std::uint64_t heap, std::uint64_t leafBegin,
+                    std::uint64_t leafEnd) {
+    const std::uint32_t first = MibitTree::leafVertex(interval, leafBegin),
+                        last = MibitTree::leafVertex(interval, leafEnd);
     const std::span<const Point2> run = points_.subspan(first, last - first + 1);
     const Band band = chordBand(run, hullOf(first, last));
     ImplicitShell& shell = tree_.implicitShells[interval.shellOffset + heap];
@@ -258,7 +262,8 @@ std::vector<MonotoneInterval> monotoneIntervals(std::span<const Point2> points) 
   return intervals;
 }
 
-MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options, std::span<const Point2> innerControls) {
+MibitTree buildMibitTree(std::span<const Point2> points, const BuildOptions& options,
+                         std::span<const Point2> innerControls) {
   return Builder(points, innerControls, options).build();
 }
 

@@ -31,9 +31,9 @@ enum class NodeShell : std::uint8_t { none, cylinder, cone };
 // ray's stretch (the leaves alone decide hits, with the exact vertex heights).
 struct MibitNode {
   enum class Kind : std::uint8_t {
-    inner,         // children at first, first + 1
-    segments,      // a leaf: `count` segments from `first` (the no-monotone-split variant)
-    interval,      // a leaf: monotone interval number `first`, refined implicitly
+    inner,     // children at first, first + 1
+    segments,  // a leaf: `count` segments from `first` (the no-monotone-split variant)
+    interval,  // a leaf: monotone interval number `first`, refined implicitly
   };
   float zLow, zHigh;  // z slab
   float rMin, rMax;   // radial extent: the CY shell, and the meridian box of closest-point queries
@@ -68,7 +68,7 @@ struct MibitTree {
   std::vector<MibitNode> nodes;  // explicit nodes; nodes[0] is the root
   std::vector<MonotoneInterval> intervals;
   std::vector<ImplicitShell> implicitShells;  // empty for CY trees
-  std::uint32_t depth = 0;  // longest root-to-leaf path, explicit and implicit nodes together
+  std::uint32_t depth = 0;                    // longest root-to-leaf path, explicit and implicit nodes together
 
   // Vertex index where leaf `leaf` of an interval begins (leaf == leaves: one past its end).
   static std::uint32_t leafVertex(const MonotoneInterval& interval, std::uint64_t leaf) noexcept {

@@ -25,12 +25,14 @@ struct FloatShell {
 };
 
 FloatShell floatShell(const Child& c, double margin) {
-  return {floatBelow(c.zLow), floatAbove(c.zHigh), floatBelow(c.rMin * c.rMin - margin), floatAbove(c.rMax * c.rMax + margin)};
+  return {floatBelow(c.zLow), floatAbove(c.zHigh), floatBelow(c.rMin * c.rMin - margin),
+          floatAbove(c.rMax * c.rMax + margin)};
 }
 
 class Builder {
  public:
-  Builder(std::span<const Point2> points, double margin, WideTree& tree) : points_(points), margin_(margin), tree_(tree) {}
+  Builder(std::span<const Point2> points, double margin, WideTree& tree)
+      : points_(points), margin_(margin), tree_(tree) {}
 
   // MR: an interval refined uniformly into leaves of at most kLeafSegments segments.
   void addInterval(const MonotoneInterval& interval) {
@@ -98,7 +100,8 @@ std::size_t WideTree::memoryBytes() const noexcept {
          childRef.capacity() * sizeof(std::uint32_t);
 }
 
-WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, const ShapeFrame& frame) {
+WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals,
+                       const ShapeFrame& frame) {
   WideTree tree;
   // The leaves' double-precision margin plus the float filter's own error (wide_search.h).
   const double margin = frame.rho2Margin + WideTree::kFloatSlack * frame.sphereRadius * frame.sphereRadius;
@@ -108,7 +111,8 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
   }
   for (std::size_t k = 0; k < segments; ++k) {
     const Point2 a = points[k], b = points[k + 1];
-    const FloatShell shell = floatShell({0, std::min(a.z, b.z), std::max(a.z, b.z), std::min(a.r, b.r), std::max(a.r, b.r)}, margin);
+    const FloatShell shell =
+        floatShell({0, std::min(a.z, b.z), std::max(a.z, b.z), std::min(a.r, b.r), std::max(a.r, b.r)}, margin);
     tree.segmentZLow.push_back(shell.zLow);
     tree.segmentZHigh.push_back(shell.zHigh);
     tree.segmentLow2.push_back(shell.low2);
@@ -127,7 +131,8 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
         zLow = std::min(zLow, tree.segmentZLow[k]), zHigh = std::max(zHigh, tree.segmentZHigh[k]);
         low2 = std::min(low2, tree.segmentLow2[k]), high2 = std::max(high2, tree.segmentHigh2[k]);
       }
-      tree.runZLow.push_back(zLow), tree.runZHigh.push_back(zHigh), tree.runLow2.push_back(low2), tree.runHigh2.push_back(high2);
+      tree.runZLow.push_back(zLow), tree.runZHigh.push_back(zHigh), tree.runLow2.push_back(low2),
+          tree.runHigh2.push_back(high2);
     }
     const std::size_t runs = WideTree::kFlatSegments / WideTree::kRunSegments;
     tree.runZLow.resize(runs, 0.0f), tree.runZHigh.resize(runs, 0.0f);
@@ -142,7 +147,8 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
   tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
   tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
   // Each level pushes at most 63 entries; within Profile::kMaxPoints the depth stays below 4.
-  if (63 * int(tree.depth) + 1 > WideTree::kStackEntries) throw std::logic_error("wide MIBIT deeper than its search stack");
+  if (63 * int(tree.depth) + 1 > WideTree::kStackEntries)
+    throw std::logic_error("wide MIBIT deeper than its search stack");
   return tree;
 }
 

@@ -72,6 +72,7 @@ struct WideTree {
 
 // `points` in the shape's local frame; `intervals` its monotone intervals; `frame` its bounding
 // sphere and shell margin.
-WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals, const ShapeFrame& frame);
+WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals,
+                       const ShapeFrame& frame);
 
 }  // namespace revolve::detail

@@ -29,7 +29,6 @@ namespace {
 
 // Unit roundoff of binary64: |fl(x op y) - x op y| <= kUnitRoundoff * |x op y| without underflow.
 
-
 // Sign of x - y from a comparison, so it is exact even where the difference would overflow.
 int signOfDifference(double x, double y) { return (x > y) - (x < y); }
 

@@ -36,7 +36,6 @@ void checkPoint(std::size_t index, Point2 p) {
   }
 }
 
-
 }  // namespace
 
 // The profile's extent (largest coordinate magnitude) and every segment's length must stay within

@@ -45,7 +45,6 @@
 namespace revolve::detail {
 namespace {
 
-
 // The sweep order: by r, then by z.
 bool sweepsBefore(Point2 a, Point2 b) { return a.r < b.r || (a.r == b.r && a.z < b.z); }
 
@@ -105,8 +104,7 @@ class Polyline {
     if (closed_ && first == 0 && second == segmentCount() - 1) {
       return foldsBack(points_[1], points_[0], points_[points_.size() - 2]);
     }
-    return segmentsShareAPoint(points_[first], points_[first + 1], points_[second],
-                               points_[second + 1]);
+    return segmentsShareAPoint(points_[first], points_[first + 1], points_[second], points_[second + 1]);
   }
 
  private:
@@ -114,9 +112,7 @@ class Polyline {
   bool closed_;
 };
 
-SegmentPair orderedPair(std::size_t a, std::size_t b) {
-  return a < b ? SegmentPair{a, b} : SegmentPair{b, a};
-}
+SegmentPair orderedPair(std::size_t a, std::size_t b) { return a < b ? SegmentPair{a, b} : SegmentPair{b, a}; }
 
 // An event: one endpoint of one segment, encoded as 2 * segment + (0 for point `segment`, 1 for
 // point `segment + 1`), so the point index is segment + low bit.
@@ -192,9 +188,7 @@ class SelfIntersectionSweep {
   using Status = std::set<std::size_t, StatusOrder>;
 
   Point2 pointOf(Event event) const { return polyline_.point(pointIndexOf(event)); }
-  bool startsAt(Event event) const {
-    return polyline_.leftPointIndex(segmentOf(event)) == pointIndexOf(event);
-  }
+  bool startsAt(Event event) const { return polyline_.leftPointIndex(segmentOf(event)) == pointIndexOf(event); }
 
   // All segment endpoints in sweep order (ties by encoding, for a deterministic result).
   std::vector<Event> sortedEvents() const {

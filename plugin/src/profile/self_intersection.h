@@ -11,7 +11,7 @@ namespace revolve::detail {
 
 // Two segments that share a point they must not share. Segment i joins points i and i + 1.
 struct SegmentPair {
-  std::size_t first;   // first < second
+  std::size_t first;  // first < second
   std::size_t second;
 };
 

@@ -155,13 +155,14 @@ CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& c
   const double nan = std::numeric_limits<double>::quiet_NaN();
   // Written so that NaN fails every test.
   const bool valid = finite(cylinder.axisDistance) && cylinder.axisDistance >= 0 && finite(cylinder.radius) &&
-                     cylinder.radius >= 0 && finite(cylinder.zMin) && finite(cylinder.zMax) && cylinder.zMin <= cylinder.zMax &&
-                     finite(scale.radial) && scale.radial > 0 && finite(scale.axial) && scale.axial != 0;
+                     cylinder.radius >= 0 && finite(cylinder.zMin) && finite(cylinder.zMax) &&
+                     cylinder.zMin <= cylinder.zMax && finite(scale.radial) && scale.radial > 0 &&
+                     finite(scale.axial) && scale.axial != 0;
   if (!valid) return {nan, {nan, nan}, 0};
   // Heights in the scaled local frame: z_scaled = axial * (z_local + zCentre).
   const double shift = scale.axial * impl.frame.zCentre;
-  const Rect rect{cylinder.axisDistance - cylinder.radius, cylinder.axisDistance + cylinder.radius, cylinder.zMin - shift,
-                  cylinder.zMax - shift};
+  const Rect rect{cylinder.axisDistance - cylinder.radius, cylinder.axisDistance + cylinder.radius,
+                  cylinder.zMin - shift, cylinder.zMax - shift};
   ClearanceSearch search(impl, rect, scale.radial, scale.axial);
   search.run();
   const Candidate& best = search.best();

@@ -1,9 +1,9 @@
 // The queries that need no Embree: nearest hit and any hit (per instruction set, see
 // isa/query_kernels.h), closest point.
+#include "shape/queries.h"
 #include "curve/part_distance.h"
 #include "isa/query_kernels.h"
 #include "mibit/best_first.h"
-#include "shape/queries.h"
 #include "util/azimuth.h"
 
 #include <algorithm>
@@ -28,7 +28,9 @@ class ClosestSegment {
   void search() {
     detail::searchBestFirst(
         shape_.mibit, shape_.local,
-        [&](double rMin, double rMax, double zLow, double zHigh) { return boxDistance2(rMin, rMax, zLow, zHigh, rho_, z_); },
+        [&](double rMin, double rMax, double zLow, double zHigh) {
+          return boxDistance2(rMin, rMax, zLow, zHigh, rho_, z_);
+        },
         [&](double distance2) { return distance2 > best2_; }, [&](std::uint32_t k) { visit(k); });
   }
 
@@ -82,11 +84,14 @@ SurfacePoint closestSurfacePoint(const detail::ShapeImpl& impl, Vec3 p) noexcept
   closest.search();
   const Point2 q = closest.point();
   return {{float(q.r * cosPhi), float(q.r * sinPhi), float(q.z + impl.frame.zCentre)},
-          float(std::sqrt(closest.distance2())), closest.segment()};
+          float(std::sqrt(closest.distance2())),
+          closest.segment()};
 }
 
 }  // namespace detail
 
-SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept { return detail::closestSurfacePoint(detail::implOf(shape), p); }
+SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept {
+  return detail::closestSurfacePoint(detail::implOf(shape), p);
+}
 
 }  // namespace revolve

@@ -36,8 +36,7 @@ double turningDegrees(Direction before, Direction after) {
 
 ShadingNormals::ShadingNormals(const Profile& profile, double creaseDegrees) {
   if (!(creaseDegrees >= 0.0 && creaseDegrees <= 180.0)) {
-    throw std::invalid_argument("crease angle " + std::to_string(creaseDegrees) +
-                                " degrees: must lie in [0, 180]");
+    throw std::invalid_argument("crease angle " + std::to_string(creaseDegrees) + " degrees: must lie in [0, 180]");
   }
   const std::span<const Point2> p = profile.points();
   const std::span<const double> arc = profile.arcLength();
@@ -70,7 +69,8 @@ ShadingNormals::ShadingNormals(const Profile& profile, double creaseDegrees) {
     if (vertex < segments) return Side{direction[vertex], length[vertex]};
     if (loop) return Side{direction[0], length[0]};
     // The last segment mirrored, from the axis point to (-r, z) of the one before: (e.r, -e.z).
-    if (p.back().r == 0.0) return Side{Direction{direction[segments - 1].r, -direction[segments - 1].z}, length[segments - 1]};
+    if (p.back().r == 0.0)
+      return Side{Direction{direction[segments - 1].r, -direction[segments - 1].z}, length[segments - 1]};
     return std::nullopt;
   };
 
@@ -98,10 +98,14 @@ ShadingNormals::ShadingNormals(const Profile& profile, double creaseDegrees) {
     const double norm = std::hypot(r, z);
     if (!(norm > 0.0)) continue;  // a fold back on itself: keep the faces' own normals
     const Meridian vertexNormal{r / norm, z / norm};
-    if (vertex > 0) endNormal_[vertex - 1] = vertexNormal;
-    else if (loop) endNormal_[segments - 1] = vertexNormal;
-    if (vertex < segments) startNormal_[vertex] = vertexNormal;
-    else if (loop) startNormal_[0] = vertexNormal;
+    if (vertex > 0)
+      endNormal_[vertex - 1] = vertexNormal;
+    else if (loop)
+      endNormal_[segments - 1] = vertexNormal;
+    if (vertex < segments)
+      startNormal_[vertex] = vertexNormal;
+    else if (loop)
+      startNormal_[0] = vertexNormal;
   }
 }
 
@@ -109,7 +113,8 @@ ShadingNormals::ShadingNormals(const Profile& polyline, const Spline& curve) : S
   const std::span<const double> T = polyline.curveParameters();
   const std::span<const Point2> p = polyline.points();
   if (T.size() != p.size()) {
-    throw std::invalid_argument("curve shading normals: the polyline was not made by Profile::fromCurve (it records no curve parameters)");
+    throw std::invalid_argument(
+        "curve shading normals: the polyline was not made by Profile::fromCurve (it records no curve parameters)");
   }
   const double pieces = double(curve.pieceCount());
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -117,8 +122,9 @@ ShadingNormals::ShadingNormals(const Profile& polyline, const Spline& curve) : S
     const std::size_t k = T[i] >= pieces ? curve.pieceCount() - 1 : std::size_t(T[i]);
     const Point2 on = curve.at(k, T[i] >= pieces ? 1.0 : T[i] - double(k));
     if (!(T[i] >= 0.0 && T[i] <= pieces) || on.r != p[i].r || on.z != p[i].z) {
-      throw std::invalid_argument("curve shading normals: point " + std::to_string(i) + " of the polyline does not lie on the " +
-                                  splineKindName(curve.kind()) + " spline at its recorded parameter (made from another curve?)");
+      throw std::invalid_argument("curve shading normals: point " + std::to_string(i) +
+                                  " of the polyline does not lie on the " + splineKindName(curve.kind()) +
+                                  " spline at its recorded parameter (made from another curve?)");
     }
   }
   curveParameter_.assign(T.begin(), T.end());
@@ -140,7 +146,8 @@ ShadingNormals::Meridian ShadingNormals::curveNormal(std::uint32_t segment, doub
   // The arc's pieces: a segment never spans a corner, but may end exactly on a join, where the
   // piece it belongs to is the one before the join (its end) or after it (its start).
   const double pieces = double((bezier_.size() - 1) / 3);
-  const double firstPiece = std::min(std::floor(T0), pieces - 1.0), lastPiece = std::max(std::ceil(T1) - 1.0, firstPiece);
+  const double firstPiece = std::min(std::floor(T0), pieces - 1.0),
+               lastPiece = std::max(std::ceil(T1) - 1.0, firstPiece);
   const auto cubic = [&](double T, double r[4], double z[4], double& u) {
     const double k = std::clamp(std::floor(T), firstPiece, lastPiece);
     u = T - k;

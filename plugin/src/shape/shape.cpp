@@ -89,8 +89,8 @@ Shape::Shape(Profile profile, const BuildOptions& options)
     const double er = points[k + 1].r - points[k].r, ez = points[k + 1].z - points[k].z;
     const double length2 = er * er + ez * ez;  // magnitudes within 2^+-60: no overflow, no underflow
     const double length = std::sqrt(length2);
-    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, arc[k] / arc.back(),
-                             (arc[k + 1] - arc[k]) / arc.back()});
+    impl.segments.push_back(
+        {ez / length, -er / length, 1.0 / length2, arc[k] / arc.back(), (arc[k + 1] - arc[k]) / arc.back()});
   }
 
   buildSearch(impl, options, {});
@@ -103,7 +103,8 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     return;
   }
   if (options.method == Method::kajiya) {
-    throw std::invalid_argument("Kajiya's strip tree bounds polylines only: a curve traced exactly needs the MIBIT search or the linear scan");
+    throw std::invalid_argument(
+        "Kajiya's strip tree bounds polylines only: a curve traced exactly needs the MIBIT search or the linear scan");
   }
   double extent = 0.0;
   for (const Point2& p : curve.bezier()) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
@@ -155,14 +156,16 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.v0 = arc[k] / total;
     c.dv = c.length / total;
     double* entry = &arcTable[c.arcOffset];
-    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
+    for (std::uint32_t i = 0; i <= c.arcSteps; ++i)
+      entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
     entry[2 * c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
   }
 
   std::vector<Point2> global;
   global.reserve(knots.size());
   for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
-  impl_ = std::make_unique<detail::ShapeImpl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()), options);
+  impl_ = std::make_unique<detail::ShapeImpl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()),
+                                              options);
   detail::ShapeImpl& impl = *impl_;
   impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
@@ -197,18 +200,22 @@ std::size_t Shape::treeNodeCount() const noexcept {
       // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
       // the interval's own root being its explicit leaf).
       std::size_t nodes = impl_->mibit.nodes.size();
-      for (const detail::MonotoneInterval& interval : impl_->mibit.intervals) nodes += 2 * std::size_t{interval.leaves} - 2;
+      for (const detail::MonotoneInterval& interval : impl_->mibit.intervals)
+        nodes += 2 * std::size_t{interval.leaves} - 2;
       return nodes;
     }
-    case Method::kajiya: return impl_->strips.nodes.size();
-    case Method::linear: return 0;
+    case Method::kajiya:
+      return impl_->strips.nodes.size();
+    case Method::linear:
+      return 0;
   }
   return 0;
 }
 
 std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
-  return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) + impl.segments.capacity() * sizeof(detail::SegmentFrame) +
+  return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
+         impl.segments.capacity() * sizeof(detail::SegmentFrame) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +

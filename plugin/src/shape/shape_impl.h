@@ -26,18 +26,18 @@ struct SegmentFrame {
 struct ShapeImpl {
   ShapeImpl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
 
-  Profile profile;  // for a spline shape: its monotone parts' ends
-  std::optional<Spline> spline;        // the curve a spline shape traces
+  Profile profile;               // for a spline shape: its monotone parts' ends
+  std::optional<Spline> spline;  // the curve a spline shape traces
   std::vector<CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
-  std::vector<double> arcTable;          // the parts' tables of v (CurvePart::arcOffset)
+  std::vector<double> arcTable;  // the parts' tables of v (CurvePart::arcOffset)
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   ShapeFrame frame;
-  std::vector<Point2> local;    // profile points in the local frame (z - frame.zCentre)
+  std::vector<Point2> local;           // profile points in the local frame (z - frame.zCentre)
   std::vector<SegmentFrame> segments;  // one per segment
-  MibitTree mibit;      // always built: it also serves closest-point queries and in-plane rays
-  WideTree wide;        // the SIMD layout, for the default options (BuildOptions::wideNodes)
-  StripTree strips;     // built for Method::kajiya only
+  MibitTree mibit;                     // always built: it also serves closest-point queries and in-plane rays
+  WideTree wide;                       // the SIMD layout, for the default options (BuildOptions::wideNodes)
+  StripTree strips;                    // built for Method::kajiya only
   Bounds bounds;
 };
 

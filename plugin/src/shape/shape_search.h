@@ -31,7 +31,9 @@ inline void searchShape(const detail::ShapeImpl& shape, const MeridianRay& ray, 
         searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
       }
       break;
-    case Method::kajiya: searchStripTree<kCount>(shape.strips, ray, hi, visit, stats); break;
+    case Method::kajiya:
+      searchStripTree<kCount>(shape.strips, ray, hi, visit, stats);
+      break;
     case Method::linear: {
       const auto segments = static_cast<std::uint32_t>(shape.local.size() - 1);
       for (std::uint32_t k = 0; k < segments; ++k) {
@@ -61,7 +63,8 @@ inline CurveHits hitsOfPart(const detail::ShapeImpl& shape, const MeridianRay& r
 
 // The leaf of either kind of shape: a polyline's segment, or a spline's part (kCurve).
 template <bool kCurve, bool kCount, bool kFirstOnly = false>
-inline auto leafHits(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi, Stats& stats) noexcept {
+inline auto leafHits(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
+                     Stats& stats) noexcept {
   if constexpr (kCurve) {
     return hitsOfPart<kCount, kFirstOnly>(shape, ray, k, hi, stats);
   } else {

@@ -45,8 +45,8 @@ inline Hit surfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, co
 
 // A hit on a spline shape's part k at parameter u. Straight parts are segments (surfaceHit);
 // curved ones take their normal from the curve's tangent at u and v from its arc length up to u.
-inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
-                           double u) noexcept {
+inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
+                           std::uint32_t k, double u) noexcept {
   const CurvePart& part = shape.parts[k];
   if (part.straight) return surfaceHit(shape, ray, caller, s, k);
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
@@ -77,8 +77,8 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
 
 // The hit of either kind of shape (u: the part's parameter, spline shapes only).
 template <bool kCurve>
-inline Hit leafSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s, std::uint32_t k,
-                          double u) noexcept {
+inline Hit leafSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
+                          std::uint32_t k, double u) noexcept {
   if constexpr (kCurve) {
     return curveSurfaceHit(shape, ray, caller, s, k, u);
   } else {
@@ -108,8 +108,9 @@ inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& 
     const std::uint32_t k = in.segment[lane];
     const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
     const SegmentFrame& frame = shape.segments[k];
-    const double values[17] = {ray.ox, ray.oy, ray.oz, ray.dx, ray.dy, ray.dz, ray.t0, ray.tScale, in.s[lane],
-                               p0.r, p0.z, p1.r, p1.z, frame.nr, frame.nz, frame.invLength2, frame.v0};
+    const double values[17] = {ray.ox,     ray.oy,           ray.oz,  ray.dx, ray.dy, ray.dz, ray.t0,
+                               ray.tScale, in.s[lane],       p0.r,    p0.z,   p1.r,   p1.z,   frame.nr,
+                               frame.nz,   frame.invLength2, frame.v0};
     for (int i = 0; i < 17; ++i) f[i][lane] = values[i];
   }
   alignas(32) double dv[kLanes];
@@ -117,7 +118,8 @@ inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& 
   const Lanes s = load(f[8]);
   const Lanes px = load(f[0]) + s * load(f[3]), py = load(f[1]) + s * load(f[4]), pz = load(f[2]) + s * load(f[5]);
   const Lanes rho2 = px * px + py * py;
-  const unsigned scaled = bits(rho2 < splat(std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon()));
+  const unsigned scaled =
+      bits(rho2 < splat(std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon()));
   const Lanes rho = sqrt(rho2);
   const Lanes cosPhi = px / rho, sinPhi = py / rho;
 

@@ -62,8 +62,8 @@ inline float azimuthFraction(double x, double y) noexcept {
   const double big = _mm_cvtsd_f64(_mm_max_sd(ax, ay)), small = _mm_cvtsd_f64(_mm_min_sd(ax, ay));
   const double a = big > 0.0 ? small / big : 0.0;  // (0, 0) is the axis, a rare and predictable case
   const double s = a * a, s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
-  const double p = (c0 + c1 * s) + s2 * (c2 + c3 * s) + s4 * ((c4 + c5 * s) + s2 * (c6 + c7 * s)) +
-                   s8 * ((c8 + c9 * s) + s2 * c10);
+  const double p =
+      (c0 + c1 * s) + s2 * (c2 + c3 * s) + s4 * ((c4 + c5 * s) + s2 * (c6 + c7 * s)) + s8 * ((c8 + c9 * s) + s2 * c10);
   // phi in [0, pi / 4]; then pi / 2 - phi when steep, pi - phi when x < 0, -phi when y < 0.
   const auto select = [](__m128d mask, __m128d ifSet, __m128d otherwise) {
     return _mm_or_pd(_mm_and_pd(mask, ifSet), _mm_andnot_pd(mask, otherwise));

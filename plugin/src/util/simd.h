@@ -43,19 +43,33 @@ struct LaneMask {
 [[gnu::always_inline]] inline Lanes operator-(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(sub)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes operator*(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(mul)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes operator/(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(div)(a.v, b.v)}; }
-[[gnu::always_inline]] inline Lanes operator-(Lanes a) noexcept { return {REVOLVE_SIMD(xor)(a.v, REVOLVE_SIMD(set1)(-0.0))}; }
+[[gnu::always_inline]] inline Lanes operator-(Lanes a) noexcept {
+  return {REVOLVE_SIMD(xor)(a.v, REVOLVE_SIMD(set1)(-0.0))};
+}
 [[gnu::always_inline]] inline Lanes sqrt(Lanes a) noexcept { return {REVOLVE_SIMD(sqrt)(a.v)}; }
-[[gnu::always_inline]] inline Lanes abs(Lanes a) noexcept { return {REVOLVE_SIMD(andnot)(REVOLVE_SIMD(set1)(-0.0), a.v)}; }
+[[gnu::always_inline]] inline Lanes abs(Lanes a) noexcept {
+  return {REVOLVE_SIMD(andnot)(REVOLVE_SIMD(set1)(-0.0), a.v)};
+}
 // min and max as minsd / maxsd compute them; no operand here is ever NaN.
 [[gnu::always_inline]] inline Lanes min(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes max(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
-[[gnu::always_inline]] inline LaneMask operator&(LaneMask a, LaneMask b) noexcept { return {REVOLVE_SIMD(and)(a.v, b.v)}; }
-[[gnu::always_inline]] inline LaneMask operator|(LaneMask a, LaneMask b) noexcept { return {REVOLVE_SIMD(or)(a.v, b.v)}; }
+[[gnu::always_inline]] inline LaneMask operator&(LaneMask a, LaneMask b) noexcept {
+  return {REVOLVE_SIMD(and)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline LaneMask operator|(LaneMask a, LaneMask b) noexcept {
+  return {REVOLVE_SIMD(or)(a.v, b.v)};
+}
 
 #if defined(__AVX2__)
-[[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
-[[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
-[[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
+[[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)};
+}
+[[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)};
+}
+[[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)};
+}
 // Lane by lane, `ifSet` where the mask holds, `otherwise` elsewhere.
 [[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes ifSet, Lanes otherwise) noexcept {
   return {_mm256_blendv_pd(otherwise.v, ifSet.v, m.v)};
@@ -108,19 +122,41 @@ struct FloatMask {
 [[gnu::always_inline]] inline FloatLanes load(const float* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
 [[gnu::always_inline]] inline void store(float* p, FloatLanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
 [[gnu::always_inline]] inline FloatLanes splatFloat(float x) noexcept { return {REVOLVE_SIMD(set1)(x)}; }
-[[gnu::always_inline]] inline FloatLanes operator+(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(add)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatLanes operator-(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(sub)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatLanes operator*(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(mul)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatLanes min(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatLanes max(FloatLanes a, FloatLanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatMask operator&(FloatMask a, FloatMask b) noexcept { return {REVOLVE_SIMD(and)(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatMask operator|(FloatMask a, FloatMask b) noexcept { return {REVOLVE_SIMD(or)(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatLanes operator+(FloatLanes a, FloatLanes b) noexcept {
+  return {REVOLVE_SIMD(add)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatLanes operator-(FloatLanes a, FloatLanes b) noexcept {
+  return {REVOLVE_SIMD(sub)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatLanes operator*(FloatLanes a, FloatLanes b) noexcept {
+  return {REVOLVE_SIMD(mul)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatLanes min(FloatLanes a, FloatLanes b) noexcept {
+  return {REVOLVE_SIMD(min)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatLanes max(FloatLanes a, FloatLanes b) noexcept {
+  return {REVOLVE_SIMD(max)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatMask operator&(FloatMask a, FloatMask b) noexcept {
+  return {REVOLVE_SIMD(and)(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatMask operator|(FloatMask a, FloatMask b) noexcept {
+  return {REVOLVE_SIMD(or)(a.v, b.v)};
+}
 #if defined(__AVX2__)
-[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept { return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)}; }
-[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept { return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)}; }
+[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm256_cmp_ps(a.v, b.v, _CMP_LT_OQ)};
+}
+[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm256_cmp_ps(a.v, b.v, _CMP_LE_OQ)};
+}
 #else
-[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept { return {_mm_cmplt_ps(a.v, b.v)}; }
-[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept { return {_mm_cmple_ps(a.v, b.v)}; }
+[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm_cmplt_ps(a.v, b.v)};
+}
+[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm_cmple_ps(a.v, b.v)};
+}
 #endif
 [[gnu::always_inline]] inline unsigned bits(FloatMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
 #undef REVOLVE_SIMD

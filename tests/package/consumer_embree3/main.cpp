@@ -132,12 +132,14 @@ int main() {
     for (int i = 0; i < 8; ++i) {
       if (valid[i] != 0) {
         ok = ok && packet.hit.geomID[i] == 0 && packet.hit.instID[0][i] == 0 && packet.hit.primID[i] == 1 &&
-             near(packet.ray.tfar[i], 5.0 - std::sqrt(0.75)) && near(packet.hit.v[i], (1.0 + packet.ray.org_z[i]) / 4.0);
+             near(packet.ray.tfar[i], 5.0 - std::sqrt(0.75)) &&
+             near(packet.hit.v[i], (1.0 + packet.ray.org_z[i]) / 4.0);
       } else {
         ok = ok && packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID && std::isinf(packet.ray.tfar[i]);
       }
     }
-    check(ok, "rtcIntersect8 with a valid mask: valid lanes hit at t = 5 - sqrt(3/4), v = (1 + z) / 4; others untouched");
+    check(ok,
+          "rtcIntersect8 with a valid mask: valid lanes hit at t = 5 - sqrt(3/4), v = (1 + z) / 4; others untouched");
   }
 
   // rtcOccluded1 and rtcOccluded4: blocked when the segment reaches the side, not when it stops short.
@@ -153,7 +155,8 @@ int main() {
     alignas(16) RTCRay4 rays{};
     const float tfar[4] = {10.0f, 4.0f, 10.0f, 4.2f};
     for (int i = 0; i < 4; ++i) {
-      rays.org_x[i] = 5, rays.org_y[i] = 0.5f, rays.org_z[i] = 1, rays.dir_x[i] = 1, rays.tfar[i] = tfar[i], rays.mask[i] = ~0u;
+      rays.org_x[i] = 5, rays.org_y[i] = 0.5f, rays.org_z[i] = 1, rays.dir_x[i] = 1, rays.tfar[i] = tfar[i],
+      rays.mask[i] = ~0u;
     }
     rtcOccluded4(valid, world, &context, &rays);
     const float inf = std::numeric_limits<float>::infinity();
@@ -163,7 +166,8 @@ int main() {
 
   // The closest surface point to (13, 0, 1): the side at (11, 0, 1), 2 away.
   {
-    const std::optional<revolve::ScenePoint> closest = revolve::closestPoint(world, {13, 0, 1}, 100.0f, lookup, &cylinder);
+    const std::optional<revolve::ScenePoint> closest =
+        revolve::closestPoint(world, {13, 0, 1}, 100.0f, lookup, &cylinder);
     check(closest && closest->instID == 0 && near(closest->distance, 2.0) && near(closest->point.x, 11.0),
           "point query through the instance: distance 2 to (11, 0, 1)");
   }
