@@ -39,16 +39,29 @@ float powerHeuristic(float a, float b) {
 }  // namespace
 
 Color Integrator::radiance(const Ray& cameraRay, RandomStream& random, RayCounts& counts) const {
+  return radiance(cameraRay, nearestHit(cameraRay, counts), random, counts);
+}
+
+Color Integrator::radiance(const Ray& cameraRay, const std::optional<scene::WorldHit>& cameraHit, RandomStream& random,
+                           RayCounts& counts) const {
   ++counts.camera;
-  if (settings_.kind == IntegratorKind::whitted) return whitted(cameraRay, 1, random, counts);
-  return path(cameraRay, random, counts);
+  if (settings_.kind == IntegratorKind::whitted) return whitted(cameraRay, cameraHit, 1, random, counts);
+  return path(cameraRay, cameraHit, random, counts);
+}
+
+std::optional<scene::WorldHit> Integrator::nearestHit(const Ray& ray, RayCounts& counts) const {
+  const PhaseScope phase(counts.clock, Phase::intersection);
+  return scene_.intersect(ray);
 }
 
 Color Integrator::direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,
                          bool shadowRays, bool mis, RandomStream& random, RayCounts& counts) const {
   Color sum;
   for (std::size_t i = 0; i < lights_.count(); ++i) {
-    const LightSample light = lights_.sample(i, hit.point, random);
+    const LightSample light = [&] {
+      const PhaseScope phase(counts.clock, Phase::sampling);
+      return lights_.sample(i, hit.point, random);
+    }();
     Color f = material.evaluate(wo, light.wi, shading, geometric);
     if (f.black() || light.irradiance.black()) continue;
     if (mis && light.pdf > 0) f = powerHeuristic(light.pdf, material.pdf(wo, light.wi, shading)) * f;
@@ -59,6 +72,7 @@ Color Integrator::direct(const scene::WorldHit& hit, const Material& material, V
 }
 
 Color Integrator::visibility(const scene::WorldHit& from, const LightSample& light, RayCounts& counts) const {
+  const PhaseScope phase(counts.clock, Phase::shadows);
   Ray shadow;
   shadow.origin = scene_.spawn(from, light.wi);
   // To a point light: the segment up to it (t in units of the unnormalised direction); to the sun: the whole ray.
@@ -82,14 +96,14 @@ Color Integrator::visibility(const scene::WorldHit& from, const LightSample& lig
   return {};
 }
 
-Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
+Color Integrator::path(Ray ray, std::optional<scene::WorldHit> hit, RandomStream& random, RayCounts& counts) const {
   Color radiance, throughput{1, 1, 1};
   // The density of the last scatter's direction (0 after a delta lobe or for the camera ray), and
   // whether the path has scattered off a diffuse or glossy lobe yet (regularisation starts then).
   float scatterPdf = 0;
   bool indirect = false;
   for (int hits = 1;; ++hits) {
-    const std::optional<scene::WorldHit> hit = scene_.intersect(ray);
+    if (hits > 1) hit = nearestHit(ray, counts);
     if (!hit) {
       const Vec3 d = normalize(ray.direction);
       Color escaped = lights_.environment(d);
@@ -109,7 +123,10 @@ Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
       radiance += throughput * direct(*hit, material, f.wo, f.shading, f.geometric, true, true, random, counts);
     }
     if (hits >= settings_.depth) break;
-    const std::optional<ScatterSample> scatter = material.sample(f.wo, f.shading, f.geometric, f.outside, random);
+    const std::optional<ScatterSample> scatter = [&] {
+      const PhaseScope phase(counts.clock, Phase::sampling);
+      return material.sample(f.wo, f.shading, f.geometric, f.outside, random);
+    }();
     if (!scatter) break;
     scatterPdf = scatter->specular ? 0 : scatter->pdf;
     indirect = indirect || !scatter->specular;
@@ -117,7 +134,11 @@ Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
     if (hits >= settings_.rouletteAfter) {
       // Continue with probability q, weighting survivors by 1 / q: unbiased, and a dim path ends early.
       const float q = std::min(throughput.max(), 0.95f);
-      if (!(random.next() < q)) break;
+      const float u = [&] {
+        const PhaseScope phase(counts.clock, Phase::sampling);
+        return random.next();
+      }();
+      if (!(u < q)) break;
       throughput = (1 / q) * throughput;
     }
     ray = Ray{scene_.spawn(*hit, scatter->wi), scatter->wi};
@@ -126,8 +147,8 @@ Color Integrator::path(Ray ray, RandomStream& random, RayCounts& counts) const {
   return radiance;
 }
 
-Color Integrator::whitted(const Ray& ray, int level, RandomStream& random, RayCounts& counts) const {
-  const std::optional<scene::WorldHit> hit = scene_.intersect(ray);
+Color Integrator::whitted(const Ray& ray, const std::optional<scene::WorldHit>& hit, int level, RandomStream& random,
+                          RayCounts& counts) const {
   if (!hit) return lights_.environment(normalize(ray.direction));
   const Material& material = materials_[hit->material];
   const bool glass = material.type() == io::MaterialType::glass;
@@ -141,7 +162,8 @@ Color Integrator::whitted(const Ray& ray, int level, RandomStream& random, RayCo
   if (level >= settings_.depth) return radiance;
   const auto trace = [&](Vec3 direction) {
     ++counts.bounce;
-    return whitted(Ray{scene_.spawn(*hit, direction), direction}, level + 1, random, counts);
+    const Ray next{scene_.spawn(*hit, direction), direction};
+    return whitted(next, nearestHit(next, counts), level + 1, random, counts);
   };
   if (glass) {
     const Material::Split split = material.glassSplit(f.wo, f.shading, f.outside);

@@ -4,18 +4,22 @@
 #include "color.h"
 #include "lights.h"
 #include "materials.h"
+#include "phase_clock.h"
 #include "random_stream.h"
 #include "scene/embree_scene.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace revolve::render {
 
 enum class IntegratorKind { path, whitted };
 
+// The rays a tile traced and, when --stats asks (clock not null), where its time went.
 struct RayCounts {
   std::uint64_t camera = 0, bounce = 0, shadow = 0;
+  PhaseClock* clock = nullptr;  // the tile's own; += leaves it alone
   RayCounts& operator+=(const RayCounts& o) {
     camera += o.camera, bounce += o.bounce, shadow += o.shadow;
     return *this;
@@ -46,10 +50,17 @@ class Integrator {
 
   // Never allocates, throws or locks.
   Color radiance(const Ray& cameraRay, RandomStream& random, RayCounts& counts) const;
+  // The same, given the camera ray's nearest hit (scene.intersect(cameraRay), or a lane of a packet
+  // of camera rays): the same random numbers drawn, the same result bit for bit.
+  Color radiance(const Ray& cameraRay, const std::optional<scene::WorldHit>& cameraHit, RandomStream& random,
+                 RayCounts& counts) const;
 
  private:
-  Color path(Ray ray, RandomStream& random, RayCounts& counts) const;
-  Color whitted(const Ray& ray, int level, RandomStream& random, RayCounts& counts) const;
+  // Each from `ray` and its nearest hit `hit`.
+  Color path(Ray ray, std::optional<scene::WorldHit> hit, RandomStream& random, RayCounts& counts) const;
+  Color whitted(const Ray& ray, const std::optional<scene::WorldHit>& hit, int level, RandomStream& random,
+                RayCounts& counts) const;
+  std::optional<scene::WorldHit> nearestHit(const Ray& ray, RayCounts& counts) const;
   // Light arriving from every light at a hit, times f cos: next-event estimation. With `mis`, a
   // light that BSDF sampling can also reach (a sun with a cone) is weighted by the power heuristic.
   Color direct(const scene::WorldHit& hit, const Material& material, Vec3 wo, Vec3 shading, Vec3 geometric,

@@ -4,11 +4,14 @@
 
 #include "integrators.h"
 #include "io/scene_file.h"
+#include "phase_clock.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 namespace revolve::render {
@@ -23,6 +26,7 @@ struct RenderSettings {
   std::uint64_t seed = 1;
   int threads = 0;  // 0: all the machine's
   IntegratorSettings integrator;
+  bool measurePhases = false;  // RenderResult::phaseShares (--stats); costs a clock read per phase switch
 };
 
 struct Image {
@@ -38,6 +42,17 @@ struct RenderResult {
   Image image;
   RayCounts rays;
   double seconds = 0;
+  // With measurePhases: the share of the tiles' time (summed over threads) in each Phase, by its
+  // number; they sum to 1. Otherwise zeros.
+  std::array<double, kPhaseCount> phaseShares{};
+};
+
+// Neighbouring pixels whose camera rays are traced together: a block of kPacketWidth x
+// kPacketHeight pixels, fewer where the image ends.
+inline constexpr int kPacketWidth = 4, kPacketHeight = 2;
+struct PixelPacket {
+  int count = 0;  // up to scene::EmbreeScene::kPacketRays
+  std::array<int, scene::EmbreeScene::kPacketRays> x{}, y{};
 };
 
 // One pixel's estimate: the mean of settings.spp samples, each from the random stream of (seed,
@@ -48,12 +63,20 @@ class PixelEstimator {
                  const RenderSettings& settings);
   // Thread-safe; never allocates, throws or locks.
   Color pixel(int x, int y, RayCounts& counts) const;
+  // The estimates of a packet's pixels, each sample's camera rays traced as one packet: out[i] is
+  // pixel(packet.x[i], packet.y[i]) bit for bit (the same random numbers drawn in the same order).
+  // Thread-safe; never allocates, throws or locks.
+  void pixels(const PixelPacket& packet, std::span<Color> out, RayCounts& counts) const;
 
  private:
+  // The pixel position of sample `s` of pixel (x, y), drawn from `random` (its first numbers).
+  std::pair<float, float> samplePosition(int x, int y, RandomStream& random) const;
+
   RenderSettings settings_;
   std::vector<Material> materials_;
   Lights lights_;
   Integrator integrator_;
+  const scene::EmbreeScene& scene_;
   scene::Camera camera_;
 };
 

@@ -89,6 +89,11 @@ void writeStats(io::OutputSet& outputs, const Options& options, const render::Re
   json["rays"] = {
       {"camera", result.rays.camera}, {"bounce", result.rays.bounce}, {"shadow", result.rays.shadow}, {"total", total}};
   json["mrays_per_second"] = result.seconds > 0 ? double(total) / result.seconds * 1e-6 : 0.0;
+  const auto share = [&](render::Phase phase) { return result.phaseShares[std::size_t(phase)]; };
+  json["time_shares"] = {{"intersection", share(render::Phase::intersection)},
+                         {"shadows", share(render::Phase::shadows)},
+                         {"sampling", share(render::Phase::sampling)},
+                         {"shading", share(render::Phase::shading)}};
   json["mibit"] = {{"queries", mibit.rays},
                    {"nodes_visited", mibit.nodesVisited},
                    {"shell_tests", mibit.shellTests},
@@ -256,6 +261,7 @@ void run(const Options& options) {
   settings.integrator.shadows = !options.noShadows;
   settings.integrator.regularize = !options.noRegularize;
   settings.integrator.filteredShadows = options.filteredShadows;
+  settings.measurePhases = !options.stats.empty();
 
   // The float image, OpenImageIO's copy of it and the converted one: 3 x 12 bytes a pixel.
   app::requireMemory(36.0 * settings.width * settings.height, "an image of " + std::to_string(settings.width) + " x " +
@@ -350,7 +356,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))
       ->capture_default_str();
-  app.add_option("--stats", options.stats, "write statistics as JSON: rays, Mrays/s, MIBIT counters, memory")
+  app.add_option("--stats", options.stats,
+                 "write statistics as JSON: rays, Mrays/s, where the time goes, MIBIT counters, memory")
       ->check(app::kNonEmpty);
   CLI::Option* exportOption =
       app.add_option(

@@ -9,9 +9,12 @@
 #include <tbb/task_group.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <span>
 
 namespace revolve::robot {
 
@@ -34,19 +37,24 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   const std::uint64_t total = std::uint64_t(poses.size()) * perPose;
   const float noReturn = std::numeric_limits<float>::infinity();
 
-  // Beam `index` (its number in the scan) from the frame of its pose.
-  const auto traceBeam = [&](std::uint64_t index, const SensorFrame& frame, io::BeamReturn& out) noexcept {
-    const std::uint64_t pose = index / perPose;
+  // Beam `index` (its number in the scan): its ray from the frame of its pose, and its direction
+  // in double precision (where the return is placed).
+  const auto beamRay = [&](std::uint64_t index, const SensorFrame& frame, Vec3d& direction) noexcept {
     const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
     const Angle& a = azimuths_[column];
     const Angle& e = elevations_[ring];
-    const Vec3d direction = frame.rotate({e.cosine * a.cosine, e.cosine * a.sine, e.sine});
+    direction = frame.rotate({e.cosine * a.cosine, e.cosine * a.sine, e.sine});
     Ray ray;
     ray.origin = {float(frame.origin[0]), float(frame.origin[1]), float(frame.origin[2])};
     ray.direction = {float(direction[0]), float(direction[1]), float(direction[2])};
-    out = {noReturn, 0, 0, 0, -1};
-    const std::optional<scene::RangeHit> hit = scene_.nearest(ray);
-    if (!hit) return;
+    return ray;
+  };
+  // The beam's return from its nearest hit.
+  const auto beamReturn = [&](std::uint64_t index, const SensorFrame& frame, const Ray& ray, const Vec3d& direction,
+                              const std::optional<scene::RangeHit>& hit) noexcept -> io::BeamReturn {
+    if (!hit) return {noReturn, 0, 0, 0, -1};
+    const std::uint64_t pose = index / perPose;
+    const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
     // t is in units of the float direction, whose length differs from 1 by its rounding.
     const double length =
         std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
@@ -55,10 +63,21 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     if (sensor_.noiseStddev > 0)
       range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
     if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
-    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return;  // ROS: not a return
+    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return {noReturn, 0, 0, 0, -1};  // ROS: not a return
     // The return where the measured range puts it along the beam, from the double-precision origin.
-    out = {float(range), float(frame.origin[0] + range * direction[0]), float(frame.origin[1] + range * direction[1]),
-           float(frame.origin[2] + range * direction[2]), std::int32_t(hit->object)};
+    return {float(range), float(frame.origin[0] + range * direction[0]), float(frame.origin[1] + range * direction[1]),
+            float(frame.origin[2] + range * direction[2]), std::int32_t(hit->object)};
+  };
+  // Beams [first, first + count) of one ring of one pose, count <= kPacketRays, traced as one packet.
+  constexpr std::size_t kPacket = scene::EmbreeScene::kPacketRays;
+  const auto tracePacket = [&](std::uint64_t first, std::size_t count, const SensorFrame& frame,
+                               io::BeamReturn* out) noexcept {
+    std::array<Ray, kPacket> rays;
+    std::array<Vec3d, kPacket> directions;
+    std::array<std::optional<scene::RangeHit>, kPacket> hits;
+    for (std::size_t k = 0; k < count; ++k) rays[k] = beamRay(first + k, frame, directions[k]);
+    scene_.nearest(std::span<const Ray>(rays.data(), count), std::span(hits.data(), count));
+    for (std::size_t k = 0; k < count; ++k) out[k] = beamReturn(first + k, frame, rays[k], directions[k], hits[k]);
   };
   // Beams [first, first + count) into `out`, on the arena's threads.
   double tracing = 0;
@@ -69,8 +88,13 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     for (std::uint64_t p = firstPose; p <= lastPose; ++p) frames.push_back(sensorFrame(sensor_.pose, poses[p]));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                          traceBeam(first + i, frames[(first + i) / perPose - firstPose], out[i]);
+                        // Neighbouring beams of a ring in packets, a packet ending where its ring does.
+                        for (std::size_t i = range.begin(); i != range.end();) {
+                          const std::uint64_t beam = first + i;
+                          const std::size_t ringLeft = columns - std::size_t(beam % columns);
+                          const std::size_t count = std::min({kPacket, ringLeft, range.end() - i});
+                          tracePacket(beam, count, frames[beam / perPose - firstPose], out.data() + i);
+                          i += count;
                         }
                       });
     tracing += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // one block at a time

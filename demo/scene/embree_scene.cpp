@@ -381,6 +381,62 @@ bool EmbreeScene::occluded(const Ray& ray) const noexcept {
   return shadow.tfar == -std::numeric_limits<float>::infinity();
 }
 
+void EmbreeScene::tracePacket(std::span<const Ray> rays, RTCRayHit8& packet,
+                              float (&lengths)[kPacketRays]) const noexcept {
+  // Every lane starts as a ray that is not traced: empty interval, no hit. A traced lane holds
+  // exactly the record the single-ray query would have been given.
+  alignas(32) int valid[kPacketRays];
+  const RTCRayHit idle = embree::newRayHit(0, 0, 0, 0, 0, 1, 0, -std::numeric_limits<float>::infinity());
+  for (std::size_t k = 0; k < kPacketRays; ++k) {
+    valid[k] = 0;
+    lengths[k] = 1.0f;
+    if (k < rays.size() && !app::embreeAccepts(rays[k])) refused_->fetch_add(1, std::memory_order_relaxed);
+    if (k >= rays.size() || !app::embreeAccepts(rays[k])) {
+      app::setPacketLane(packet, int(k), idle);
+      continue;
+    }
+    RTCRayHit one = app::embreeRayHit(rays[k]);
+    if (unitDirections_) lengths[k] = normaliseDirection(one.ray);
+    app::setPacketLane(packet, int(k), one);
+    valid[k] = -1;
+  }
+  embree::RayQuery query;
+  query.intersect(valid, top_.get(), packet);
+  // Lanes left out keep their empty hit: Embree writes only valid lanes.
+}
+
+void EmbreeScene::intersect(std::span<const Ray> rays, std::span<std::optional<WorldHit>> hits) const noexcept {
+  alignas(32) RTCRayHit8 packet;
+  float lengths[kPacketRays];
+  tracePacket(rays, packet, lengths);
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    RTCRayHit rayHit = app::packetLane(packet, int(k));
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+      hits[k] = std::nullopt;
+      continue;
+    }
+    rayHit.ray.tfar /= lengths[k];
+    hits[k] = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(rays[k], rayHit) : quadHit(rays[k], rayHit);
+  }
+}
+
+void EmbreeScene::nearest(std::span<const Ray> rays, std::span<std::optional<RangeHit>> hits) const noexcept {
+  alignas(32) RTCRayHit8 packet;
+  float lengths[kPacketRays];
+  tracePacket(rays, packet, lengths);
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+      hits[k] = std::nullopt;
+      continue;
+    }
+    const float t = packet.ray.tfar[k] / lengths[k];
+    const std::uint32_t instance = packet.hit.instID[0][k];
+    hits[k] =
+        RangeHit{t, instance != RTC_INVALID_GEOMETRY_ID ? instance
+                                                        : std::uint32_t(instances_.size() + packet.hit.primID[k] / 2)};
+  }
+}
+
 std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
   const Instance& instance = instances_[rayHit.hit.instID[0]];
   const Prototype& prototype = *prototypes_[instance.prototype];

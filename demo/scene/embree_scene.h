@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace revolve::scene {
@@ -72,6 +73,14 @@ class EmbreeScene {
   std::optional<RangeHit> nearest(const Ray& ray) const noexcept;
   // Whether anything lies on the ray within [tnear, tfar].
   bool occluded(const Ray& ray) const noexcept;
+  // Packets: up to kPacketRays rays traced together through Embree's 8-wide query (rtcIntersect8
+  // with a valid mask), so that Embree walks its tree once for rays that travel together (a camera's
+  // neighbouring pixels, a lidar's neighbouring beams). hits[i] is exactly what intersect(rays[i]) /
+  // nearest(rays[i]) returns, bit for bit; rays.size() <= kPacketRays, hits.size() == rays.size().
+  // Rays that break Embree's contract are refused and counted as above, the rest of the packet traced.
+  static constexpr std::size_t kPacketRays = 8;
+  void intersect(std::span<const Ray> rays, std::span<std::optional<WorldHit>> hits) const noexcept;
+  void nearest(std::span<const Ray> rays, std::span<std::optional<RangeHit>> hits) const noexcept;
   // Origin for a ray leaving `hit` in `direction`: revolve::offsetRayOrigin for exact surfaces
   // (plus the instance transform's error), the same construction from the barycentric point's
   // error bound for triangles (pbrt-v4), so the new ray neither re-hits the surface it leaves nor
@@ -95,6 +104,9 @@ class EmbreeScene {
  private:
   std::optional<WorldHit> instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
   std::optional<WorldHit> quadHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+  // The packet of rays[i] set up and traced: lanes that are not traced come back without a hit
+  // (geomID invalid); lengths[i] is what the lane's t is to be divided by (unit directions).
+  void tracePacket(std::span<const Ray> rays, RTCRayHit8& packet, float (&lengths)[kPacketRays]) const noexcept;
 
   struct MemoryCounter {
     std::atomic<std::int64_t> current{0}, peak{0};

@@ -66,6 +66,42 @@ TEST(RevolveRenderCliTest, RendersPngAndExrOfTheRequestedSizeAndWritesStats) {
   EXPECT_EQ(dir.entries(), (std::set<std::string>{"scene.json", "bottle.csv", "image.png", "image.exr", "stats.json"}));
 }
 
+// --stats says where the render's time went: a share for each phase, each in [0, 1], summing to 1
+// (every moment of a tile is charged to exactly one phase; 1e-9 covers the rounding of four double
+// divisions and their sum). Without shadow rays (whitted --no-shadows) the shadows' share is 0;
+// with path tracing, whose every diffuse hit sends one, it is not; every render traces and draws.
+TEST(RevolveRenderCliTest, StatsSayWhereTheTimeGoes) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kScene);
+  dir.write("bottle.csv", kBottleCsv);
+  const auto shares = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"scene.json", "-o", "image.png", "--stats", "stats.json", "--spp", "4"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result run = runRender(dir.path(), args);
+    EXPECT_EQ(run.status, 0) << run.err;
+    return nlohmann::json::parse(readWholeFile(dir / "stats.json"))["time_shares"];
+  };
+  for (const auto& extra : {std::vector<std::string>{}, {"--integrator", "whitted", "--no-shadows"}}) {
+    const nlohmann::json time = shares(extra);
+    double sum = 0;
+    for (const char* key : {"intersection", "shadows", "sampling", "shading"}) {
+      ASSERT_TRUE(time.contains(key)) << key;
+      const double share = time[key].get<double>();
+      EXPECT_GE(share, 0.0) << key;
+      EXPECT_LE(share, 1.0) << key;
+      sum += share;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-9);
+    EXPECT_EQ(time.size(), 4u);
+    EXPECT_GT(time["intersection"].get<double>(), 0.0);
+    EXPECT_GT(time["sampling"].get<double>(), 0.0);
+    if (extra.empty())
+      EXPECT_GT(time["shadows"].get<double>(), 0.0);
+    else
+      EXPECT_EQ(time["shadows"].get<double>(), 0.0);
+  }
+}
+
 // Embree's own linear cone curve in place of revolve's geometry, for the scenes it can express.
 TEST(RevolveRenderCliTest, RendersWithEmbreeConeCurves) {
   const ScratchDirectory dir;
