@@ -11,7 +11,9 @@ inline namespace REVOLVE_ISA {
 
 inline constexpr CallbackKernels kCallbackKernels{
     REVOLVE_ISA_NAME,
-    {intersectCallback<false>, intersectCallback<true>},
+    {{intersectCallback<false, 0>, intersectCallback<false, 1>, intersectCallback<false, 2>,
+      intersectCallback<false, 3>},
+     {intersectCallback<true, 0>, intersectCallback<true, 1>, intersectCallback<true, 2>, intersectCallback<true, 3>}},
     {occludedCallback<false>, occludedCallback<true>},
 };
 
