@@ -1,7 +1,8 @@
 // revolve-lean-hits: what a hit's attributes cost. One shape behind four revolve::Geometry objects,
 // one per choice of Geometry::Options::normal and ::uv, each timed on the benchmark's incoherent
-// rays (rtcIntersect1) and its camera's packets (rtcIntersect8), and the cost of asking
-// revolve::surfaceAttributes afterwards for every hit a lean geometry found.
+// rays (rtcIntersect1) and its camera's packets (rtcIntersect8), the cost of asking
+// revolve::surfaceAttributes afterwards for every hit a lean geometry found, and rtcOccluded1 on the
+// same incoherent rays.
 //
 //   revolve-lean-hits SHAPE POINTS|spline REPETITIONS
 //
@@ -123,6 +124,9 @@ int main(int argc, char** argv) {
     }
     configs.push_back({"incoherent1", "t-only+surfaceAttributes", onDemandBatch(scenes.back(), shape, incoherent),
                        incoherent.size()});
+    // Shadow rays along the same rays, for scale: rtcOccluded1 computes no attributes and stops at
+    // the first hit.
+    configs.push_back({"incoherent1", "occluded", occludedBatch(scenes[0], incoherent), incoherent.size()});
     for (std::size_t c = 0; c < scenes.size(); ++c) {
       configs.push_back({"camera8", kChoices[c].name, packetBatch(scenes[c], packets), camera.size()});
     }

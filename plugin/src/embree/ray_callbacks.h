@@ -20,7 +20,7 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
-inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
+[[gnu::always_inline]] inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
   return {{RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i)},
           {RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i)},
           RTCRayN_tnear(rays, N, i),
