@@ -45,6 +45,9 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
         if (!a) continue;
         ++hits;
         ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;
+        const std::optional<Hit> c = baseline->attributes(detail::implOf(shape), ray, a->segment, a->t);
+        const std::optional<Hit> d = avx2->attributes(detail::implOf(shape), ray, a->segment, a->t);
+        ASSERT_TRUE(c && d && sameHit(*c, *d)) << named.name << ": surfaceAttributes";
       }
     }
   }
@@ -73,6 +76,9 @@ TEST(IsaTest, SplineShapesGiveTheSameHitsBitForBit) {
       if (!a) continue;
       ++hits;
       ASSERT_TRUE(sameHit(*a, *b)) << named.name << ": t " << a->t << " vs " << b->t;
+      const std::optional<Hit> c = baseline->attributes(detail::implOf(shape), ray, a->segment, a->t);
+      const std::optional<Hit> d = avx2->attributes(detail::implOf(shape), ray, a->segment, a->t);
+      ASSERT_TRUE(c && d && sameHit(*c, *d)) << named.name << ": surfaceAttributes";
     }
   }
   EXPECT_GT(hits, 10000u);

@@ -329,6 +329,14 @@ struct Hit {
 std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
 // Whether any hit with tnear <= t <= tfar exists.
 bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
+// A hit's every attribute afterwards, from what a lean hit keeps (Geometry::Options): `ray` as it
+// was traced (its tnear and tfar before the call, which wrote t into tfar), the hit's `segment`
+// (Embree's primID) and its `t`. Equal bit for bit to the Hit intersect gives and to what the
+// Embree callbacks write with every attribute on, when `ray` is exactly the ray traced (for an
+// instanced geometry: the object-space ray Embree handed the callback, which its rounding of the
+// transform makes; a ray transformed otherwise gives the hit on `segment` nearest to t). Nothing
+// when the ray does not meet that segment (or segment is no segment of the shape).
+std::optional<Hit> surfaceAttributes(const Shape& shape, const Ray& ray, std::uint32_t segment, float t) noexcept;
 
 struct SurfacePoint {
   Vec3 point;  // closest point of the surface

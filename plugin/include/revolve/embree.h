@@ -35,6 +35,15 @@ class Geometry {
  public:
   struct Options {
     bool countStats = false;  // accumulate Stats (slower); read them with stats()
+    // Lean hits: which of a hit's attributes rtcIntersect* computes. With `normal` off Ng is written
+    // as (0, 0, 0), with `uv` off u and v as 0; tfar, primID, geomID and the instance ids always.
+    // Embree reads none of Ng, u, v of a user geometry's hit: they are the caller's. Turning them
+    // off saves their cost a hit (for a caller that needs only the distance, or needs them for a
+    // few hits: revolve::surfaceAttributes computes them afterwards, equal bit for bit to what the
+    // callback would have written). A filter function is always offered every attribute, and a
+    // hit a filter accepted is written with every attribute. rtcOccluded* computes none anyway.
+    bool normal = true;
+    bool uv = true;
   };
   // Throws std::runtime_error, with Embree's error code, when Embree cannot create the geometry.
   Geometry(RTCDevice device, const Shape& shape, Options options);

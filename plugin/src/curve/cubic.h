@@ -41,7 +41,7 @@ inline void cubicWithDerivative(const double c[4], double u, double& value, doub
 
 // The control values of c restricted to [u0, u1], reparametrised to [0, 1]: the blossom
 // c(u0, u0, u0), c(u0, u0, u1), c(u0, u1, u1), c(u1, u1, u1). Exact at the ends of [0, 1].
-inline void cubicRestricted(const double c[4], double u0, double u1, double out[4]) noexcept {
+[[gnu::always_inline]] inline void cubicRestricted(const double c[4], double u0, double u1, double out[4]) noexcept {
   const auto blossom = [&](double a, double b, double d) {
     const double va = 1.0 - a, vb = 1.0 - b, vd = 1.0 - d;
     const double x0 = va * c[0] + a * c[1], x1 = va * c[1] + a * c[2], x2 = va * c[2] + a * c[3];

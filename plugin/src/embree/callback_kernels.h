@@ -8,7 +8,9 @@ namespace revolve::detail {
 
 struct CallbackKernels {
   const char* isa;
-  RTCIntersectFunctionN intersect[2];  // indexed by Geometry::Options::countStats
+  // Indexed by Geometry::Options::countStats, then by the attributes the hits carry: bit 0 the
+  // normal (Options::normal), bit 1 u and v (Options::uv).
+  RTCIntersectFunctionN intersect[2][4];
   RTCOccludedFunctionN occluded[2];
 };
 

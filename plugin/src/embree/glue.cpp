@@ -99,7 +99,8 @@ Geometry::Geometry(RTCDevice device, const Shape& shape, Options options)
   rtcSetGeometryUserData(geometry_, payload_.get());
   rtcSetGeometryBoundsFunction(geometry_, boundsCallback, nullptr);
   const detail::CallbackKernels& kernels = detail::callbackKernels();
-  rtcSetGeometryIntersectFunction(geometry_, kernels.intersect[options.countStats]);
+  const unsigned attributes = (options.normal ? 1u : 0u) | (options.uv ? 2u : 0u);  // CallbackKernels' order
+  rtcSetGeometryIntersectFunction(geometry_, kernels.intersect[options.countStats][attributes]);
   rtcSetGeometryOccludedFunction(geometry_, kernels.occluded[options.countStats]);
   rtcCommitGeometry(geometry_);
 }

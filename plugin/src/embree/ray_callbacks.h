@@ -20,7 +20,7 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
-inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
+[[gnu::always_inline]] inline Ray laneRay(RTCRayN* rays, unsigned N, unsigned i) noexcept {
   return {{RTCRayN_org_x(rays, N, i), RTCRayN_org_y(rays, N, i), RTCRayN_org_z(rays, N, i)},
           {RTCRayN_dir_x(rays, N, i), RTCRayN_dir_y(rays, N, i), RTCRayN_dir_z(rays, N, i)},
           RTCRayN_tnear(rays, N, i),
@@ -46,16 +46,6 @@ struct FilterLane {
   alignas(64) float hit[16 * sizeof(RTCHit) / sizeof(float)];  // RTCHitN with stride N <= 16
   RTCHitN* hits() noexcept { return reinterpret_cast<RTCHitN*>(hit); }
 };
-
-// The curve parameter of hit j of a leaf (spline parts only; 0 for segments, which need none).
-template <class Hits>
-inline double leafParameter(const Hits& hits, int j) noexcept {
-  if constexpr (requires { hits.u[j]; }) {
-    return hits.u[j];
-  } else {
-    return 0.0;
-  }
-}
 
 // Visits candidate hits of lane i in search order and offers each one, nearest first within a
 // segment, to the intersection filters; an accepted one becomes the lane's hit and lowers hi.
@@ -194,8 +184,9 @@ inline void writeHit(const RTCIntersectFunctionNArguments* args, unsigned i, flo
 
 // A packet: the lanes set up kLanes at a time, searched one by one, and their hits' attributes
 // computed kLanes at a time (surfaceHitLanes, equal to surfaceHit bit for bit; spline shapes' one
-// at a time).
-template <bool kCount, bool kCurve>
+// at a time). kAttributes: which attributes unfiltered hits carry (surface_hit.h); a filter is
+// always offered every attribute, and the hit it accepts is written with every attribute.
+template <bool kCount, bool kCurve, unsigned kAttributes>
 inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const GeometryPayload& payload, bool filtered,
                             Stats& stats) noexcept {
   const ShapeImpl& shape = *payload.shape;
@@ -231,7 +222,8 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Ge
   if constexpr (kCurve) {
     for (int j = 0; j < foundCount; ++j) {
       const Found& f = found[j];
-      const Hit hit = curveSurfaceHit(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment, f.u);
+      const Hit hit =
+          curveSurfaceHit<kAttributes>(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment, f.u);
       writeHit(args, f.lane, hit.t, hit.normal.x, hit.normal.y, hit.normal.z, hit.u, hit.v, hit.segment);
     }
     return;
@@ -247,11 +239,11 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Ge
       in.tfar[lane] = RTCRayN_tfar(rays, N, f.lane);
     }
     HitAttributes out{};
-    const unsigned scaled = surfaceHitLanes(shape, in, out);
+    const unsigned scaled = surfaceHitLanes<kAttributes>(shape, in, out);
     for (int lane = 0; lane < kLanes && first + lane < foundCount; ++lane) {
       const Found& f = found[first + lane];
       if ((scaled >> lane) & 1) {  // within 1e-154 of the axis: the scalar path's scaling
-        const Hit hit = surfaceHit(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment);
+        const Hit hit = surfaceHit<kAttributes>(shape, meridians[f.lane], laneRay(rays, N, f.lane), f.s, f.segment);
         writeHit(args, f.lane, hit.t, hit.normal.x, hit.normal.y, hit.normal.z, hit.u, hit.v, hit.segment);
       } else {
         writeHit(args, f.lane, out.t[lane], out.nx[lane], out.ny[lane], out.nz[lane], out.u[lane], out.v[lane],
@@ -263,7 +255,7 @@ inline void intersectPacket(const RTCIntersectFunctionNArguments* args, const Ge
 
 // rtcIntersect1's case, without a filter: N = 1, where Embree's packet is exactly an RTCRayHit, so
 // the fields are read and written directly rather than through the N-wide accessors.
-template <bool kCount, bool kCurve>
+template <bool kCount, bool kCurve, unsigned kAttributes>
 inline void intersectOne(const RTCIntersectFunctionNArguments* args, const ShapeImpl& shape, Stats& stats) noexcept {
   RTCRayHit& rayHit = *reinterpret_cast<RTCRayHit*>(args->rayhit);
   const Ray ray{{rayHit.ray.org_x, rayHit.ray.org_y, rayHit.ray.org_z},
@@ -276,7 +268,7 @@ inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape
   NearestHit<kCount, kCurve> nearest{shape, meridian, hi, stats};
   searchShape<kCount>(shape, meridian, hi, nearest, stats);
   if (!nearest.found()) return;
-  const Hit hit = leafSurfaceHit<kCurve>(shape, meridian, ray, nearest.s, nearest.segment, nearest.u);
+  const Hit hit = leafSurfaceHit<kCurve, kAttributes>(shape, meridian, ray, nearest.s, nearest.segment, nearest.u);
   rayHit.ray.tfar = hit.t;
   rayHit.hit.Ng_x = hit.normal.x;
   rayHit.hit.Ng_y = hit.normal.y;
@@ -288,7 +280,7 @@ inline void intersectOne(const RTCIntersectFunctionNArguments* args, const Shape
   recordInstance(rayHit.hit, args->context);
 }
 
-template <bool kCount, bool kCurve>
+template <bool kCount, bool kCurve, unsigned kAttributes>
 void intersectWith(const RTCIntersectFunctionNArguments* args, GeometryPayload& payload) {
   const ShapeImpl& shape = *payload.shape;
   const bool filtered = intersectFiltered(args, payload);
@@ -302,22 +294,24 @@ void intersectWith(const RTCIntersectFunctionNArguments* args, GeometryPayload& 
           intersectLane<kCount, kCurve>(args, payload, true, meridian, 0, stats);
         }
       } else {
-        intersectOne<kCount, kCurve>(args, shape, stats);
+        intersectOne<kCount, kCurve, kAttributes>(args, shape, stats);
       }
     }
   } else {
-    intersectPacket<kCount, kCurve>(args, payload, filtered, stats);
+    intersectPacket<kCount, kCurve, kAttributes>(args, payload, filtered, stats);
   }
   if constexpr (kCount) payload.add(stats);
 }
 
-template <bool kCount>
+// kAttributes: Geometry::Options' normal and uv (kNormalAttribute | kUvAttribute for both), fixed
+// when the geometry is created, so each choice is its own callback without a test per ray.
+template <bool kCount, unsigned kAttributes>
 void intersectCallback(const RTCIntersectFunctionNArguments* args) {
   auto& payload = *static_cast<GeometryPayload*>(args->geometryUserPtr);
   if (payload.shape->curved()) {
-    intersectWith<kCount, true>(args, payload);
+    intersectWith<kCount, true, kAttributes>(args, payload);
   } else {
-    intersectWith<kCount, false>(args, payload);
+    intersectWith<kCount, false, kAttributes>(args, payload);
   }
 }
 

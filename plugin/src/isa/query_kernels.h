@@ -14,6 +14,8 @@ struct QueryKernels {
   const char* isa;
   std::optional<Hit> (*intersect)(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept;
   bool (*occluded)(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept;
+  std::optional<Hit> (*attributes)(const detail::ShapeImpl& shape, const Ray& ray, std::uint32_t segment,
+                                   float t) noexcept;
 };
 
 enum class Isa { sse2, avx2 };

@@ -7,6 +7,9 @@
 #include "shape/surface_hit.h"
 #include "util/isa.h"
 
+#include <cmath>
+#include <cstdint>
+
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
@@ -33,6 +36,34 @@ bool anyHit(const detail::ShapeImpl& shape, const Ray& ray, Stats& stats) noexce
   return any.found;
 }
 
+// surfaceAttributes: segment k's hits over the range the search used ([lo, hi] of the same
+// MeridianRay, as NearestHit takes them), so the same s and the same attributes. The nearest first
+// (NearestHit's own kFirstOnly call, which gave the unfiltered hit); then, for a hit a filter chose
+// or a ray not exactly the one traced, the hit of the segment whose t is nearest.
+template <bool kCurve>
+std::optional<Hit> hitOnLeaf(const detail::ShapeImpl& shape, const Ray& ray, std::uint32_t k, float t) noexcept {
+  const std::size_t leaves = kCurve ? shape.parts.size() : shape.local.size() - 1;
+  MeridianRay meridian;
+  if (k >= leaves || !setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
+  Stats unused;
+  const auto first = leafHits<kCurve, false, true>(shape, meridian, k, meridian.hi, unused);
+  if (first.count == 0) return std::nullopt;
+  const Hit nearest = leafSurfaceHit<kCurve>(shape, meridian, ray, first.s[0], k, leafParameter(first, 0));
+  if (nearest.t == t) return nearest;
+  const auto all = leafHits<kCurve, false, false>(shape, meridian, k, meridian.hi, unused);
+  std::optional<Hit> best;
+  for (int j = 0; j < all.count; ++j) {
+    const Hit hit = leafSurfaceHit<kCurve>(shape, meridian, ray, all.s[j], k, leafParameter(all, j));
+    if (!best || std::abs(double(hit.t) - t) < std::abs(double(best->t) - t)) best = hit;
+  }
+  return best ? best : nearest;
+}
+
+inline std::optional<Hit> attributesEntry(const detail::ShapeImpl& shape, const Ray& ray, std::uint32_t segment,
+                                          float t) noexcept {
+  return shape.curved() ? hitOnLeaf<true>(shape, ray, segment, t) : hitOnLeaf<false>(shape, ray, segment, t);
+}
+
 inline std::optional<Hit> intersectEntry(const detail::ShapeImpl& shape, const Ray& ray, Stats* stats) noexcept {
   Stats unused;
   if (shape.curved())
@@ -51,6 +82,7 @@ inline constexpr QueryKernels kQueryKernels{
     REVOLVE_ISA_NAME,
     intersectEntry,
     occludedEntry,
+    attributesEntry,
 };
 
 }  // namespace REVOLVE_ISA

@@ -115,7 +115,7 @@ struct PartView {
   const MeridianRay& ray;
   double r[4], z[4];
 
-  double at(double u, double& s) const noexcept {
+  [[gnu::always_inline]] double at(double u, double& s) const noexcept {
     const double zu = cubicAt(z, u), ru = cubicAt(r, u);
     s = ray.planeS(zu);
     return ray.rho2At(s) - ru * ru;
@@ -134,7 +134,7 @@ struct PartView {
 // F's Bernstein coefficients over [0, 1] (degree 6), from the products of the cubics
 // P(u) = (ox, oy) + s(u) (dx, dy) and r(u): F_k = sum over i + j = k of
 // C(3, i) C(3, j) / C(6, k) (P_i . P_j - r_i r_j).
-inline void coefficientsOf(const PartView& view, double b[7]) noexcept {
+[[gnu::always_inline]] inline void coefficientsOf(const PartView& view, double b[7]) noexcept {
   const MeridianRay& ray = view.ray;
   double px[4], py[4];
   for (int i = 0; i < 4; ++i) {
@@ -201,8 +201,8 @@ inline int signChanges(const Interval& interval) noexcept {
 // places the crossing by the radius instead; of that chord's roots, the one nearest planeS(z(u)).
 // `span`: the part's parameter range the view covers (a restriction's is narrower), so that the
 // chord is 2^-29 of the part whatever the view.
-inline double rayParameterAt(const PartView& view, double u, double span, double lo, double hi,
-                             double sTolerance) noexcept {
+[[gnu::always_inline]] inline double rayParameterAt(const PartView& view, double u, double span, double lo, double hi,
+                                                    double sTolerance) noexcept {
   double s;
   view.at(u, s);
   const double zMagnitude =

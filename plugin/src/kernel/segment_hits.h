@@ -71,7 +71,8 @@ inline void addApexTouch(const MeridianRay& ray, double zApex, double sLow, doub
 // error stays proportional to the segment's length however flat the segment is. Positive outside,
 // negative inside, zero exactly on the surface: such an end is a hit itself (tnear <= t <= tfar is
 // inclusive at both ends), which bracketedRoots reports whichever way the ray crosses there.
-inline double outwardAt(const MeridianRay& ray, double s, Point2 p0, double er, double ez) noexcept {
+[[gnu::always_inline]] inline double outwardAt(const MeridianRay& ray, double s, Point2 p0, double er,
+                                               double ez) noexcept {
   const double rho = std::sqrt(ray.rho2At(s));
   const double L = p0.r * ez + (ray.zAt(s) - p0.z) * er;
   return ez > 0.0 ? ez * rho - L : L - ez * rho;

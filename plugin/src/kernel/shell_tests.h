@@ -27,8 +27,8 @@ inline namespace REVOLVE_ISA {
 
 // Annular cylinder rMin <= rho <= rMax over [s0, s1] (already clipped to the z slab), given
 // rho^2 at both ends (q0, q1): the tree searches share these between neighbouring nodes.
-inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax, double s0, double s1, double q0,
-                                double q1) noexcept {
+[[gnu::always_inline]] inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax, double s0,
+                                                       double s1, double q0, double q1) noexcept {
   if (std::max(q0, q1) < rMin * rMin - ray.rho2Margin) return false;  // inside the inner cylinder throughout
   if (std::min(q0, q1) <= rMax * rMax + ray.rho2Margin) return true;
   // Both ends outside the outer cylinder: only the closest approach to the axis can reach in.
@@ -36,7 +36,8 @@ inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax
   return ray.a > 0.0 && s0 < ray.sAxis && ray.sAxis < s1 && ray.beta <= rMax * rMax + ray.rho2Margin;
 }
 
-inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax, double s0, double s1) noexcept {
+[[gnu::always_inline]] inline bool cylinderShellPasses(const MeridianRay& ray, double rMin, double rMax, double s0,
+                                                       double s1) noexcept {
   return cylinderShellPasses(ray, rMin, rMax, s0, s1, ray.rho2At(s0), ray.rho2At(s1));
 }
 

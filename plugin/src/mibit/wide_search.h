@@ -42,7 +42,7 @@ struct ShellRay {
 // hi rounded up to a float (the stretch must not lose its end to rounding).
 inline float floatHi(double hi) noexcept { return float(hi + (std::abs(hi) * 0x1p-23 + 0x1p-140)); }
 
-inline ShellRay shellRayOf(const MeridianRay& ray, double sphereRadius) noexcept {
+[[gnu::always_inline]] inline ShellRay shellRayOf(const MeridianRay& ray, double sphereRadius) noexcept {
   const bool parallel = !(ray.a > 0.0);
   const auto lo = float(ray.lo - (std::abs(ray.lo) * 0x1p-23 + 0x1p-140));  // a float below lo
   return {splatFloat(float(ray.oz)),

@@ -71,6 +71,10 @@ bool occluded(const Shape& shape, const Ray& ray, Stats* stats) noexcept {
   return detail::queryKernels().occluded(detail::implOf(shape), ray, stats);
 }
 
+std::optional<Hit> surfaceAttributes(const Shape& shape, const Ray& ray, std::uint32_t segment, float t) noexcept {
+  return detail::queryKernels().attributes(detail::implOf(shape), ray, segment, t);
+}
+
 namespace detail {
 
 SurfacePoint closestSurfacePoint(const detail::ShapeImpl& impl, Vec3 p) noexcept {

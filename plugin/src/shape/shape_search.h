@@ -72,6 +72,16 @@ inline auto leafHits(const detail::ShapeImpl& shape, const MeridianRay& ray, std
   }
 }
 
+// The curve parameter of hit j of a leaf (spline parts only; 0 for segments, which need none).
+template <class Hits>
+inline double leafParameter(const Hits& hits, int j) noexcept {
+  if constexpr (requires { hits.u[j]; }) {
+    return hits.u[j];
+  } else {
+    return 0.0;
+  }
+}
+
 // The nearest hit: (s, segment), ties to the lower segment; for spline shapes also the part's
 // parameter there.
 template <bool kCount, bool kCurve = false>

@@ -24,32 +24,54 @@ inline float callerT(const MeridianRay& ray, const Ray& caller, double s) noexce
   return std::clamp(t, caller.tnear, caller.tfar);
 }
 
+// Which of a hit's attributes to compute (Geometry::Options::normal, ::uv): t, the point and the
+// segment always; the normal and u, v only when asked for, zero otherwise. What is computed is the
+// same bit for bit whatever else is (each attribute is its own chain of operations).
+inline constexpr unsigned kNormalAttribute = 1, kUvAttribute = 2, kAllAttributes = 3;
+
+template <unsigned kAttributes = kAllAttributes>
 inline Hit surfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                       std::uint32_t k) noexcept {
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
   const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
   const SegmentFrame& frame = shape.segments[k];
-  const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
 
-  Hit hit;
+  Hit hit{};
   hit.t = callerT(ray, caller, s);
   hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
-  // + 0.0f turns -0 into +0, so that printed normals never read "-0".
-  hit.normal = {float(frame.nr * cosPhi) + 0.0f, float(frame.nr * sinPhi) + 0.0f, float(frame.nz) + 0.0f};
-  hit.u = azimuthFraction(px, py);
-  const double along = ((rho - p0.r) * (p1.r - p0.r) + (pz - p0.z) * (p1.z - p0.z)) * frame.invLength2;
-  hit.v = float(frame.v0 + std::clamp(along, 0.0, 1.0) * frame.dv);
   hit.segment = k;
+  if constexpr (kAttributes == 0) return hit;
+  const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
+  if constexpr ((kAttributes & kNormalAttribute) != 0) {
+    // + 0.0f turns -0 into +0, so that printed normals never read "-0".
+    hit.normal = {float(frame.nr * cosPhi) + 0.0f, float(frame.nr * sinPhi) + 0.0f, float(frame.nz) + 0.0f};
+  }
+  if constexpr ((kAttributes & kUvAttribute) != 0) {
+    hit.u = azimuthFraction(px, py);
+    const double along = ((rho - p0.r) * (p1.r - p0.r) + (pz - p0.z) * (p1.z - p0.z)) * frame.invLength2;
+    hit.v = float(frame.v0 + std::clamp(along, 0.0, 1.0) * frame.dv);
+  }
   return hit;
 }
 
 // A hit on a spline shape's part k at parameter u. Straight parts are segments (surfaceHit);
 // curved ones take their normal from the curve's tangent at u and v from its arc length up to u.
+template <unsigned kAttributes = kAllAttributes>
 inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                            std::uint32_t k, double u) noexcept {
   const CurvePart& part = shape.parts[k];
-  if (part.straight) return surfaceHit(shape, ray, caller, s, k);
+  if (part.straight) return surfaceHit<kAttributes>(shape, ray, caller, s, k);
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
+  Hit hit{};
+  hit.t = callerT(ray, caller, s);
+  hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
+  hit.segment = k;
+  if constexpr ((kAttributes & kUvAttribute) != 0) {
+    hit.u = azimuthFraction(px, py);
+    const double v = hermiteAt(&shape.arcTable[part.arcOffset], part.arcSteps, u);
+    hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
+  }
+  if constexpr ((kAttributes & kNormalAttribute) == 0) return hit;
   const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
   double tr = cubicDerivative(part.r, u), tz = cubicDerivative(part.z, u);
   if (tr == 0.0 && tz == 0.0) {
@@ -64,25 +86,18 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
   if (!(std::max(std::abs(tr), std::abs(tz)) >= 0x1p-500)) tr *= 0x1p600, tz *= 0x1p600;
   const double inverse = 1.0 / std::sqrt(tr * tr + tz * tz);
   const double nr = tz * inverse, nz = -tr * inverse;  // right of the direction of travel
-  Hit hit;
-  hit.t = callerT(ray, caller, s);
-  hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
   hit.normal = {float(nr * cosPhi) + 0.0f, float(nr * sinPhi) + 0.0f, float(nz) + 0.0f};
-  hit.u = azimuthFraction(px, py);
-  const double v = hermiteAt(&shape.arcTable[part.arcOffset], part.arcSteps, u);
-  hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
-  hit.segment = k;
   return hit;
 }
 
 // The hit of either kind of shape (u: the part's parameter, spline shapes only).
-template <bool kCurve>
+template <bool kCurve, unsigned kAttributes = kAllAttributes>
 inline Hit leafSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                           std::uint32_t k, double u) noexcept {
   if constexpr (kCurve) {
-    return curveSurfaceHit(shape, ray, caller, s, k, u);
+    return curveSurfaceHit<kAttributes>(shape, ray, caller, s, k, u);
   } else {
-    return surfaceHit(shape, ray, caller, s, k);
+    return surfaceHit<kAttributes>(shape, ray, caller, s, k);
   }
 }
 
@@ -101,6 +116,7 @@ struct HitAttributes {
   float t[kLanes], nx[kLanes], ny[kLanes], nz[kLanes], u[kLanes], v[kLanes];
 };
 
+template <unsigned kAttributes = kAllAttributes>
 inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& in, HitAttributes& out) noexcept {
   alignas(32) double f[17][kLanes];  // gathered: ray, segment and caller, lane by lane
   for (int lane = 0; lane < kLanes; ++lane) {
@@ -116,24 +132,28 @@ inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& 
   alignas(32) double dv[kLanes];
   for (int lane = 0; lane < kLanes; ++lane) dv[lane] = shape.segments[in.segment[lane]].dv;
   const Lanes s = load(f[8]);
+  storeFloats(out.t, load(f[6]) + s / load(f[7]));
+  for (int lane = 0; lane < kLanes; ++lane) out.t[lane] = std::clamp(out.t[lane], in.tnear[lane], in.tfar[lane]);
+  if constexpr (kAttributes == 0) return 0;
   const Lanes px = load(f[0]) + s * load(f[3]), py = load(f[1]) + s * load(f[4]), pz = load(f[2]) + s * load(f[5]);
   const Lanes rho2 = px * px + py * py;
   const unsigned scaled =
       bits(rho2 < splat(std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon()));
   const Lanes rho = sqrt(rho2);
-  const Lanes cosPhi = px / rho, sinPhi = py / rho;
-
-  storeFloats(out.t, load(f[6]) + s / load(f[7]));
-  for (int lane = 0; lane < kLanes; ++lane) out.t[lane] = std::clamp(out.t[lane], in.tnear[lane], in.tfar[lane]);
-  const Lanes nr = load(f[13]);
-  storeFloats(out.nx, nr * cosPhi);
-  storeFloats(out.ny, nr * sinPhi);
-  storeFloats(out.nz, load(f[14]));
-  for (int lane = 0; lane < kLanes; ++lane) out.nx[lane] += 0.0f, out.ny[lane] += 0.0f, out.nz[lane] += 0.0f;
-  azimuthFractions(px, py, out.u);
-  const Lanes r0 = load(f[9]), z0 = load(f[10]);
-  const Lanes along = ((rho - r0) * (load(f[11]) - r0) + (pz - z0) * (load(f[12]) - z0)) * load(f[15]);
-  storeFloats(out.v, load(f[16]) + minOf(maxOf(along, splat(0.0)), splat(1.0)) * load(dv));
+  if constexpr ((kAttributes & kNormalAttribute) != 0) {
+    const Lanes cosPhi = px / rho, sinPhi = py / rho;
+    const Lanes nr = load(f[13]);
+    storeFloats(out.nx, nr * cosPhi);
+    storeFloats(out.ny, nr * sinPhi);
+    storeFloats(out.nz, load(f[14]));
+    for (int lane = 0; lane < kLanes; ++lane) out.nx[lane] += 0.0f, out.ny[lane] += 0.0f, out.nz[lane] += 0.0f;
+  }
+  if constexpr ((kAttributes & kUvAttribute) != 0) {
+    azimuthFractions(px, py, out.u);
+    const Lanes r0 = load(f[9]), z0 = load(f[10]);
+    const Lanes along = ((rho - r0) * (load(f[11]) - r0) + (pz - z0) * (load(f[12]) - z0)) * load(f[15]);
+    storeFloats(out.v, load(f[16]) + minOf(maxOf(along, splat(0.0)), splat(1.0)) * load(dv));
+  }
   return scaled;
 }
 

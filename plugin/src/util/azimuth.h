@@ -52,7 +52,7 @@ inline constexpr double c0 = 0.999999999628638, c1 = -0.3333332393819627, c2 = 0
                         c9 = -0.00719949830984707, c10 = 0.0010911327931163242;
 }  // namespace azimuth_internal
 
-inline float azimuthFraction(double x, double y) noexcept {
+[[gnu::always_inline]] inline float azimuthFraction(double x, double y) noexcept {
   using namespace azimuth_internal;
   const __m128d zero = _mm_setzero_pd();
   const __m128d vx = _mm_set_sd(x), vy = _mm_set_sd(y);
