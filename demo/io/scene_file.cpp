@@ -3,6 +3,7 @@
 #include "io/curve_polyline.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
+#include "scene/transform.h"
 
 #include <nlohmann/json.hpp>
 
@@ -317,28 +318,11 @@ SceneEnvironment readEnvironment(const Reader& in, const Json& json) {
 
 }  // namespace
 
-Matrix3d rotationOf(const SceneTransform& transform) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const auto& k = transform.rotateAxis;
-  return {Vec3d{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-          Vec3d{k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-          Vec3d{k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
-}
-
-Matrix3d linearPart(const SceneTransform& transform) {
-  Matrix3d m = rotationOf(transform);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[i][j] *= transform.scale[j];
-  }
-  return m;
-}
-
 double worldReach(const Profile& profile, const SceneTransform& transform) {
   double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
   for (const Point2 p : profile.points())
     rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-  const Matrix3d m = linearPart(transform);
+  const scene::Matrix3d m = scene::linearPart(transform);
   double reach = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
