@@ -78,10 +78,6 @@ struct SceneTransform {
   Vec3d translate{0, 0, 0};
 };
 
-// The largest |coordinate| any point of `profile` reaches placed by `transform`: the corners of
-// its box [-rmax, rmax]^2 x [zmin, zmax], carried to the world.
-double worldReach(const Profile& profile, const SceneTransform& transform);
-
 struct SceneObject {
   std::string name;          // empty unless given
   std::size_t profile = 0;   // index into SceneDescription::profiles

@@ -98,6 +98,22 @@ Matrix3d inverseLinearPart(const io::SceneTransform& transform) {
   return inverse;
 }
 
+double worldReach(const Profile& profile, const io::SceneTransform& transform) {
+  double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
+  for (const Point2 p : profile.points())
+    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  const Matrix3d m = linearPart(transform);
+  double reach = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
+    for (int a = 0; a < 3; ++a) {
+      reach = std::max(reach,
+                       std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
+    }
+  }
+  return reach;
+}
+
 Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
   const double theta = transform.rotateDegrees * std::numbers::pi / 180.0, c = std::cos(theta), s = std::sin(theta);
   const Vec3d& k = transform.rotateAxis;

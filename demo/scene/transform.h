@@ -59,4 +59,9 @@ Matrix3d inverseLinearPart(const io::SceneTransform& transform);
 // k (k . v)(1 - c)), without building the matrix.
 Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v);
 
+// The largest |coordinate| any point of `profile` reaches placed by `transform`: the corners of
+// its box [-rmax, rmax]^2 x [zmin, zmax], carried to the world. The scene file's reader holds it
+// within the coordinate limit (common/ray_limits.h).
+double worldReach(const Profile& profile, const io::SceneTransform& transform);
+
 }  // namespace revolve::scene

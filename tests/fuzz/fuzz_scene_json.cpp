@@ -13,6 +13,7 @@
 #include "io/scene_file.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
+#include "scene/transform.h"
 
 #include <cmath>
 #include <cstddef>
@@ -111,7 +112,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkUnit(object.transform.rotateAxis);
     for (const double s : object.transform.scale) FUZZ_CHECK(s >= app::kMinScale && s <= app::kMaxScale);
     checkPosition(object.transform.translate);
-    FUZZ_CHECK(io::worldReach(scene.profiles[object.profile].profile, object.transform) <= app::kMaxWorldCoordinate);
+    FUZZ_CHECK(scene::worldReach(scene.profiles[object.profile].profile, object.transform) <= app::kMaxWorldCoordinate);
   }
   for (const io::SceneQuad& quad : scene.quads) {
     FUZZ_CHECK(quad.material < scene.materials.size());
