@@ -12,9 +12,9 @@
 #include "io/scene_file.h"
 #include "progress.h"
 #include "renderer.h"
-#include "robot/picking.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
+#include "scene/picking.h"
 
 #include <tbb/info.h>
 #include <CLI/CLI.hpp>
@@ -170,7 +170,7 @@ void checkKajiya(const Options& options, const io::SceneDescription& description
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
   const scene::EmbreeScene built(description, buildSettings(options));
-  const std::optional<robot::Pick> picked = robot::pick(description, built, width, height, x, y);
+  const std::optional<scene::Pick> picked = scene::pick(description, built, width, height, x, y);
   if (!picked) {
     std::printf("nothing\n");
     return;
