@@ -1,5 +1,6 @@
 #include "robot/scan_plot.h"
 
+#include "io/temporary_files.h"
 #include "io/text_files.h"
 #include "robot/placed_shape.h"
 #include "robot/sensor_rig.h"
