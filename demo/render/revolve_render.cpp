@@ -49,12 +49,10 @@ scene::BuildSettings buildSettings(const Options& options) {
   build.mesh = options.geometry == "mesh";
   build.embreeCone = options.geometry == "embree-cone";
   build.slices = options.slices;
-  build.options.method = options.geometry == "linear"   ? Method::linear
-                         : options.geometry == "kajiya" ? Method::kajiya
-                                                        : Method::mibit;
-  build.options.shell = options.shell == "cone"     ? ShellKind::cone
-                        : options.shell == "hybrid" ? ShellKind::hybrid
-                                                    : ShellKind::cylinder;
+  // --geometry mesh and embree-cone name no Method: the default stays, unused. The command line
+  // has checked both names.
+  if (const std::optional<Method> method = methodNamed(options.geometry)) build.options.method = *method;
+  build.options.shell = *shellKindNamed(options.shell);
   build.options.subdivisions = options.subdivisions;
   build.options.monotoneSplit = !options.noMonotoneSplit;
   build.options.rangeSearch = !options.noRangeSearch;

@@ -235,6 +235,13 @@ enum class ShellKind {
   hybrid,    // HY: per node the cheaper-to-test fit, by the paper's area / interval / factor-4 rule
 };
 
+// "mibit", "linear", "kajiya" and "cylinder", "cone", "hybrid" (the names the tools' --method,
+// --geometry and --shell take), and back; nothing for an unknown name.
+const char* methodName(Method method) noexcept;
+std::optional<Method> methodNamed(std::string_view name) noexcept;
+const char* shellKindName(ShellKind shell) noexcept;
+std::optional<ShellKind> shellKindNamed(std::string_view name) noexcept;
+
 struct BuildOptions {
   Method method = Method::mibit;
   // Cylinders by default: measured fastest here (README, Performance), their test needs no square
