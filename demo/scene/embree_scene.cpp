@@ -18,6 +18,10 @@
 
 namespace revolve::scene {
 
+using app::operator+;  // common/vector_math.h
+using app::operator-;
+using app::operator*;
+
 namespace {
 
 constexpr double kUnitRoundoff = 0x1p-24;  // float's u

@@ -21,6 +21,9 @@
 #include <string_view>
 
 using namespace revolve;
+using app::operator+;  // common/vector_math.h
+using app::operator-;
+using app::operator*;
 
 namespace {
 
