@@ -433,7 +433,7 @@ TEST(EmbreeFilterTest, FiltersWorkInPackets) {
 
 TEST(EmbreeStatsTest, CountingGeometryAccumulatesWork) {
   std::mt19937_64 random(808);
-  SingleShapeScene s(Shape(Profile(testing::sphereLike(1.0, 256))), Geometry::Options{true});
+  SingleShapeScene s(Shape(Profile(testing::sphereLike(1.0, 256))), Geometry::Options{.countStats = true});
   const std::vector<Ray> rays = testing::incoherentRays(s.shape, random, 1000);
   Stats pure;
   for (const Ray& ray : rays) {
