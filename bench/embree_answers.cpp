@@ -45,11 +45,11 @@ const char* const kHeader = "shape,method,query,ray,hit,t,ng_x,ng_y,ng_z,prim,u,
 
 // The methods whose answers are revolve's own (compared bit for bit) and Embree's (measured).
 std::vector<MethodConfig> methods() {
-  return {{MethodKind::mibit, ShellKind::cylinder, 64},
-          {MethodKind::mibit, ShellKind::cylinder, 1024},
-          {MethodKind::spline},
-          {MethodKind::mesh, ShellKind::cylinder, 64, 64},
-          {MethodKind::embreeCone, ShellKind::cylinder, 64}};
+  return {{.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = 64},
+          {.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = 1024},
+          {.kind = MethodKind::spline},
+          {.kind = MethodKind::mesh, .shell = ShellKind::cylinder, .points = 64, .slices = 64},
+          {.kind = MethodKind::embreeCone, .shell = ShellKind::cylinder, .points = 64}};
 }
 bool revolvesOwn(const std::string& method) { return method.rfind("mibit", 0) == 0 || method.rfind("spline", 0) == 0; }
 

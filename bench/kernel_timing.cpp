@@ -75,8 +75,9 @@ int main(int argc, char** argv) {
     const AnalyticSphere sphere{{0.0, 0.0, 0.5 * (e.zLow + e.zHigh)}, std::min(e.rMax, 0.5 * (e.zHigh - e.zLow))};
 
     std::vector<std::pair<std::string, std::unique_ptr<TracedScene>>> scenes;
-    scenes.emplace_back("sphere_primitive", std::make_unique<TracedScene>(device, monitor, *shape,
-                                                                          MethodConfig{MethodKind::sphere}, sphere));
+    scenes.emplace_back(
+        "sphere_primitive",
+        std::make_unique<TracedScene>(device, monitor, *shape, MethodConfig{.kind = MethodKind::sphere}, sphere));
     for (int n : points) {
       MethodConfig config;
       config.kind = MethodKind::mibit;

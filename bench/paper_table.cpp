@@ -218,7 +218,7 @@ nlohmann::ordered_json paperTableJson(const PaperTableSettings& settings, const 
     for (const PaperTableRow& row : example.rows) {
       nlohmann::ordered_json entry;
       entry["row"] = row.label;
-      entry["method"] = row.options.method == Method::kajiya ? "kajiya" : "mibit";
+      entry["method"] = methodName(row.options.method);
       entry["monotone_split"] = row.options.method == Method::mibit && row.options.monotoneSplit;
       entry["range_search"] = row.options.method == Method::mibit && row.options.rangeSearch;
       entry["wide_tree"] = row.label == "wide";

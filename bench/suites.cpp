@@ -199,21 +199,23 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
     Timer timer(settings.repetitions, settings.minSeconds);
     ShapeBench bench(device, monitor, profile, settings, true);
     std::fprintf(stderr, "  building and measuring errors\n");
-    bench.add({MethodKind::sphere}, allModes, timer);
+    bench.add({.kind = MethodKind::sphere}, allModes, timer);
     for (int n : ladders.mibitPoints) {
-      bench.add({MethodKind::mibit, ShellKind::cylinder, n}, allModes, timer);
-      bench.add({MethodKind::mibit, ShellKind::cylinder, n, 0, true}, incoherentOnly, timer);
-      bench.add({MethodKind::mibit, ShellKind::cone, n}, incoherentOnly, timer);
-      bench.add({MethodKind::mibit, ShellKind::hybrid, n}, incoherentOnly, timer);
+      bench.add({.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = n}, allModes, timer);
+      bench.add({.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = n, .binary = true}, incoherentOnly,
+                timer);
+      bench.add({.kind = MethodKind::mibit, .shell = ShellKind::cone, .points = n}, incoherentOnly, timer);
+      bench.add({.kind = MethodKind::mibit, .shell = ShellKind::hybrid, .points = n}, incoherentOnly, timer);
     }
     for (int n : ladders.baselinePoints) {
-      bench.add({MethodKind::linear, ShellKind::cylinder, n}, incoherentOnly, timer);
-      bench.add({MethodKind::kajiya, ShellKind::cylinder, n}, incoherentOnly, timer);
+      bench.add({.kind = MethodKind::linear, .shell = ShellKind::cylinder, .points = n}, incoherentOnly, timer);
+      bench.add({.kind = MethodKind::kajiya, .shell = ShellKind::cylinder, .points = n}, incoherentOnly, timer);
     }
     // Embree's own curves: the cone curve on MIBIT's very polylines, the round curve fitted anew.
-    for (int n : ladders.mibitPoints) bench.add({MethodKind::embreeCone, ShellKind::cylinder, n}, allModes, timer);
+    for (int n : ladders.mibitPoints)
+      bench.add({.kind = MethodKind::embreeCone, .shell = ShellKind::cylinder, .points = n}, allModes, timer);
     for (int n : ladders.roundSegments)
-      bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, allModes, timer);
+      bench.add({.kind = MethodKind::embreeRoundCurve, .shell = ShellKind::cylinder, .points = n}, allModes, timer);
     // Meshes whose two errors (the profile's chords, the slices' facets) are within a factor of 16
     // of each other: a mesh far off that balance is beaten by one with fewer triangles.
     for (int n : ladders.meshPoints) {
@@ -221,25 +223,27 @@ std::vector<ShapeResult> runSpeedError(RTCDevice device, const RunSettings& sett
         const double chord = profile.sampleError(n), facet = facetError(profile.rMax(), k);
         const std::uint64_t triangles = 2ull * std::uint64_t(n - 1) * std::uint64_t(k);
         if (triangles > ladders.maxTriangles || std::max(chord, facet) > 16.0 * std::min(chord, facet)) continue;
-        bench.add({MethodKind::mesh, ShellKind::cylinder, n, k}, allModes, timer);
+        bench.add({.kind = MethodKind::mesh, .shell = ShellKind::cylinder, .points = n, .slices = k}, allModes, timer);
       }
     }
     // The curves: the spline exactly, its adaptive polylines (and their meshes, slices balancing the
     // tolerance), and polylines of evenly spaced points.
     const std::vector<const char*> curveModes = {kIncoherent1, kCamera8};
-    bench.add({MethodKind::spline}, allModes, timer);
+    bench.add({.kind = MethodKind::spline}, allModes, timer);
     for (double tolerance : ladders.tolerances) {
-      bench.add({MethodKind::adaptive, ShellKind::cylinder, 0, 0, false, tolerance}, curveModes, timer);
+      bench.add({.kind = MethodKind::adaptive, .shell = ShellKind::cylinder, .tolerance = tolerance}, curveModes,
+                timer);
       int k = 8;
       while (k < 4096 && facetError(profile.rMax(), k) > tolerance * profile.size()) k *= 2;
       const Profile polyline = Profile::fromCurve(bench.spline(), tolerance * profile.size());
       if (2ull * polyline.segmentCount() * std::uint64_t(k) <= ladders.maxTriangles) {
-        bench.add({MethodKind::adaptiveMesh, ShellKind::cylinder, 0, k, false, tolerance}, curveModes, timer);
+        bench.add({.kind = MethodKind::adaptiveMesh, .shell = ShellKind::cylinder, .slices = k, .tolerance = tolerance},
+                  curveModes, timer);
       }
     }
     for (int n : ladders.uniformPoints) {
       if (n > int(profile.pieces().size()))
-        bench.add({MethodKind::uniform, ShellKind::cylinder, n}, {kIncoherent1}, timer);
+        bench.add({.kind = MethodKind::uniform, .shell = ShellKind::cylinder, .points = n}, {kIncoherent1}, timer);
     }
     ShapeResult result = bench.finish(timer);
     matchErrorLevels(result, kErrorLevels);
@@ -263,18 +267,19 @@ std::vector<ShapeResult> runScaling(RTCDevice device, const RunSettings& setting
   ShapeBench bench(device, monitor, profile, settings, false);
   std::fprintf(stderr, "  building and measuring errors\n");
   for (int n : points) {
-    bench.add({MethodKind::mibit, ShellKind::cylinder, n}, modes, timer);
-    bench.add({MethodKind::mibit, ShellKind::cylinder, n, 0, true}, modes, timer);
-    bench.add({MethodKind::linear, ShellKind::cylinder, n}, modes, timer);
-    bench.add({MethodKind::kajiya, ShellKind::cylinder, n}, modes, timer);
-    bench.add({MethodKind::embreeCone, ShellKind::cylinder, n}, modes, timer);
-    if (n <= roundCurveMax) bench.add({MethodKind::embreeRoundCurve, ShellKind::cylinder, n}, modes, timer);
+    bench.add({.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = n}, modes, timer);
+    bench.add({.kind = MethodKind::mibit, .shell = ShellKind::cylinder, .points = n, .binary = true}, modes, timer);
+    bench.add({.kind = MethodKind::linear, .shell = ShellKind::cylinder, .points = n}, modes, timer);
+    bench.add({.kind = MethodKind::kajiya, .shell = ShellKind::cylinder, .points = n}, modes, timer);
+    bench.add({.kind = MethodKind::embreeCone, .shell = ShellKind::cylinder, .points = n}, modes, timer);
+    if (n <= roundCurveMax)
+      bench.add({.kind = MethodKind::embreeRoundCurve, .shell = ShellKind::cylinder, .points = n}, modes, timer);
     // The mesh of the same profile with just enough slices that its facets are no coarser than its
     // chords (at most 4096 slices and 2^24 triangles).
     int k = 8;
     while (k < 4096 && facetError(profile.rMax(), k) > profile.sampleError(n)) k *= 2;
     if (2ull * std::uint64_t(n - 1) * std::uint64_t(k) <= (1ull << 24)) {
-      bench.add({MethodKind::mesh, ShellKind::cylinder, n, k}, modes, timer);
+      bench.add({.kind = MethodKind::mesh, .shell = ShellKind::cylinder, .points = n, .slices = k}, modes, timer);
     }
   }
   return {bench.finish(timer)};

@@ -48,13 +48,13 @@ struct Variant {
 };
 const Variant kVariants[] = {
     {"mibit/cylinder, wide (the default)", {}},
-    {"mibit/cylinder, binary tree", {Method::mibit, ShellKind::cylinder, 0, true, true, false}},
-    {"mibit/cone", {Method::mibit, ShellKind::cone}},
-    {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}},
-    {"mibit, no monotone split", {Method::mibit, ShellKind::cylinder, 0, false, true}},
-    {"mibit, no range search", {Method::mibit, ShellKind::cylinder, 0, true, false}},
-    {"linear", {Method::linear}},
-    {"kajiya", {Method::kajiya}},
+    {"mibit/cylinder, binary tree", {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false}},
+    {"mibit/cone", {.method = Method::mibit, .shell = ShellKind::cone}},
+    {"mibit/hybrid", {.method = Method::mibit, .shell = ShellKind::hybrid}},
+    {"mibit, no monotone split", {.method = Method::mibit, .shell = ShellKind::cylinder, .monotoneSplit = false}},
+    {"mibit, no range search", {.method = Method::mibit, .shell = ShellKind::cylinder, .rangeSearch = false}},
+    {"linear", {.method = Method::linear}},
+    {"kajiya", {.method = Method::kajiya}},
 };
 
 struct Expected {

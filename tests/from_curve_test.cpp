@@ -120,8 +120,8 @@ TEST(FromCurveTest, NeedsFewerPointsThanEqualParameterSteps) {
 TEST(FromCurveTest, RefusesBadTolerances) {
   const Spline sphere(SplineKind::bezier, testing::bezierSphere(0.5, 4));
   for (const double bad : {0.0, -1e-3, double(NAN), double(INFINITY)})
-    EXPECT_THROW(Profile::fromCurve(sphere, bad), std::invalid_argument) << bad;
-  EXPECT_THROW(Profile::fromCurve(sphere, 1e-14), std::invalid_argument);  // below 2^-40 of the extent
+    EXPECT_THROW((void)Profile::fromCurve(sphere, bad), std::invalid_argument) << bad;
+  EXPECT_THROW((void)Profile::fromCurve(sphere, 1e-14), std::invalid_argument);  // below 2^-40 of the extent
   // A linear spline is its own polyline.
   const std::vector<Point2> points{{0, 0}, {1, 0}, {1, 1}};
   EXPECT_EQ(Profile::fromCurve(Spline(SplineKind::linear, points), 1.0).points().size(), 3u);

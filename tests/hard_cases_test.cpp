@@ -26,12 +26,12 @@ struct Variant {
 };
 
 const Variant kVariants[] = {
-    {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}},
-    {"mibit/cylinder (wide, the default)", {Method::mibit, ShellKind::cylinder}},
-    {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}},
-    {"mibit/cone", {Method::mibit, ShellKind::cone}},
-    {"linear", {Method::linear}},
-    {"kajiya", {Method::kajiya}},
+    {"mibit/hybrid", {.method = Method::mibit, .shell = ShellKind::hybrid}},
+    {"mibit/cylinder (wide, the default)", {.method = Method::mibit, .shell = ShellKind::cylinder}},
+    {"mibit/cylinder/binary", {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false}},
+    {"mibit/cone", {.method = Method::mibit, .shell = ShellKind::cone}},
+    {"linear", {.method = Method::linear}},
+    {"kajiya", {.method = Method::kajiya}},
 };
 
 reference::RefRay toRef(const Ray& ray) {

@@ -27,8 +27,9 @@ TEST(IsaTest, EveryInstructionSetGivesTheSameHitsBitForBit) {
   std::mt19937_64 random(20240);
   std::size_t hits = 0;
   for (const testing::NamedProfile& named : testing::standardProfiles()) {
-    for (const BuildOptions options : {BuildOptions{}, BuildOptions{Method::linear}, BuildOptions{Method::kajiya},
-                                       BuildOptions{Method::mibit, ShellKind::hybrid}}) {
+    for (const BuildOptions options :
+         {BuildOptions{}, BuildOptions{.method = Method::linear}, BuildOptions{.method = Method::kajiya},
+          BuildOptions{.method = Method::mibit, .shell = ShellKind::hybrid}}) {
       const Shape shape(Profile(named.points), options);
       std::vector<Ray> rays = testing::incoherentRays(shape, random, 3000);
       const std::vector<Ray> awkward = testing::axisAlignedRays(shape, random, 1000);

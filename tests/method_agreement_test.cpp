@@ -28,14 +28,18 @@ std::vector<Variant> variants() {
   std::vector<Variant> all;
   for (ShellKind shell : {ShellKind::cylinder, ShellKind::cone, ShellKind::hybrid}) {
     const char* name = shell == ShellKind::cylinder ? "cylinder" : shell == ShellKind::cone ? "cone" : "hybrid";
-    all.push_back({std::string("mibit/") + name, {Method::mibit, shell}});
-    all.push_back({std::string("mibit/") + name + "/no range search", {Method::mibit, shell, 0, true, false}});
+    all.push_back({std::string("mibit/") + name, {.method = Method::mibit, .shell = shell}});
+    all.push_back({std::string("mibit/") + name + "/no range search",
+                   {.method = Method::mibit, .shell = shell, .rangeSearch = false}});
   }
-  all.push_back({"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}});
-  all.push_back({"mibit/hybrid/4 subdivisions", {Method::mibit, ShellKind::hybrid, 4}});
-  all.push_back({"mibit/hybrid/no monotone split", {Method::mibit, ShellKind::hybrid, 0, false}});
-  all.push_back({"mibit/cone/3 subdivisions, no split", {Method::mibit, ShellKind::cone, 3, false}});
-  all.push_back({"kajiya", {Method::kajiya}});
+  all.push_back({"mibit/cylinder/binary", {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false}});
+  all.push_back(
+      {"mibit/hybrid/4 subdivisions", {.method = Method::mibit, .shell = ShellKind::hybrid, .subdivisions = 4}});
+  all.push_back({"mibit/hybrid/no monotone split",
+                 {.method = Method::mibit, .shell = ShellKind::hybrid, .monotoneSplit = false}});
+  all.push_back({"mibit/cone/3 subdivisions, no split",
+                 {.method = Method::mibit, .shell = ShellKind::cone, .subdivisions = 3, .monotoneSplit = false}});
+  all.push_back({"kajiya", {.method = Method::kajiya}});
   return all;
 }
 
@@ -70,7 +74,7 @@ TEST(MethodAgreementTest, MibitAndKajiyaMatchLinearScanHitForHit) {
   for (const testing::NamedProfile& named : profiles) {
     SCOPED_TRACE(named.name + ", seed " + std::to_string(kSeed));
     const Profile profile(named.points);
-    const Shape linear(profile, {Method::linear});
+    const Shape linear(profile, {.method = Method::linear});
     std::vector<Shape> shapes;
     for (const Variant& variant : compared) shapes.emplace_back(profile, variant.options);
 
@@ -134,7 +138,7 @@ TEST(MethodAgreementTest, RaysAimedAtVerticesAgreeAtEveryScale) {
       std::vector<Point2> points;
       for (const Point2& p : closed.points) points.push_back({p.r * scale, p.z * scale});
       const Profile profile(points);
-      const Shape linear(profile, {Method::linear});
+      const Shape linear(profile, {.method = Method::linear});
       std::vector<Shape> shapes;
       for (const Variant& variant : compared) shapes.emplace_back(profile, variant.options);
       const std::vector<Vec3> origins = testing::interiorPoints(points, random, 64, 1e-4 * scale);

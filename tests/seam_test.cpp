@@ -55,13 +55,15 @@ TEST(SeamTest, RaysFromInsideAimedAtVertexCirclesNeverLeak) {
   const std::vector<Variant> variants = {
       {"mibit (the default: cylinder, wide)", {}, defaultRays},
       {"mibit/cylinder/binary",
-       {Method::mibit, ShellKind::cylinder, 0, true, true, false},
+       {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false},
        testing::scaledRays(100'000)},
-      {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, testing::scaledRays(100'000)},
-      {"mibit/cone", {Method::mibit, ShellKind::cone}, testing::scaledRays(100'000)},
-      {"mibit/no split", {Method::mibit, ShellKind::hybrid, 0, false}, testing::scaledRays(50'000)},
-      {"kajiya", {Method::kajiya}, testing::scaledRays(50'000)},
-      {"linear", {Method::linear}, testing::scaledRays(20'000)},
+      {"mibit/hybrid", {.method = Method::mibit, .shell = ShellKind::hybrid}, testing::scaledRays(100'000)},
+      {"mibit/cone", {.method = Method::mibit, .shell = ShellKind::cone}, testing::scaledRays(100'000)},
+      {"mibit/no split",
+       {.method = Method::mibit, .shell = ShellKind::hybrid, .monotoneSplit = false},
+       testing::scaledRays(50'000)},
+      {"kajiya", {.method = Method::kajiya}, testing::scaledRays(50'000)},
+      {"linear", {.method = Method::linear}, testing::scaledRays(20'000)},
   };
   for (const Variant& variant : variants) {
     std::size_t fired = 0, leaks = 0;

@@ -71,13 +71,15 @@ TEST(SecondaryRaysTest, SpawnedRaysNeverReHitTheSurfaceTheyLeaveButFindItElsewhe
   constexpr std::uint64_t kSeed = 0x5ecd;
   const Variant variants[] = {
       {"mibit/cylinder",
-       {Method::mibit, ShellKind::cylinder},
+       {.method = Method::mibit, .shell = ShellKind::cylinder},
        testing::scaledRays(60000)},  // the default (wide) carries the million
-      {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}, testing::scaledRays(6000)},
-      {"mibit/cone", {Method::mibit, ShellKind::cone}, testing::scaledRays(6000)},
-      {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}, testing::scaledRays(6000)},
-      {"linear", {Method::linear}, testing::scaledRays(3000)},
-      {"kajiya", {Method::kajiya}, testing::scaledRays(6000)},
+      {"mibit/cylinder/binary",
+       {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false},
+       testing::scaledRays(6000)},
+      {"mibit/cone", {.method = Method::mibit, .shell = ShellKind::cone}, testing::scaledRays(6000)},
+      {"mibit/hybrid", {.method = Method::mibit, .shell = ShellKind::hybrid}, testing::scaledRays(6000)},
+      {"linear", {.method = Method::linear}, testing::scaledRays(3000)},
+      {"kajiya", {.method = Method::kajiya}, testing::scaledRays(6000)},
   };
   for (const Variant& variant : variants) {
     std::mt19937_64 random(kSeed);

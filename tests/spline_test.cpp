@@ -270,7 +270,7 @@ TEST(SplineTest, ShapesReportTheirParts) {
   EXPECT_EQ(torus.profile().segmentCount(), 6u);
   // Arc length: a quarter of the sphere's circumference over its half.
   EXPECT_NEAR(shape.profile().arcLength().back(), M_PI, 1e-5);
-  EXPECT_THROW(Shape(sphere, BuildOptions{Method::kajiya}), std::invalid_argument);
+  EXPECT_THROW(Shape(sphere, BuildOptions{.method = Method::kajiya}), std::invalid_argument);
 }
 
 }  // namespace

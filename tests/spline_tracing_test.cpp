@@ -29,11 +29,11 @@ struct Variant {
 
 const Variant kVariants[] = {
     {"mibit (wide, the default)", {}},
-    {"mibit/cylinder/binary", {Method::mibit, ShellKind::cylinder, 0, true, true, false}},
-    {"mibit/hybrid", {Method::mibit, ShellKind::hybrid}},
-    {"mibit/cone", {Method::mibit, ShellKind::cone}},
-    {"mibit/no split", {Method::mibit, ShellKind::cylinder, 0, false}},
-    {"linear", {Method::linear}},
+    {"mibit/cylinder/binary", {.method = Method::mibit, .shell = ShellKind::cylinder, .wideNodes = false}},
+    {"mibit/hybrid", {.method = Method::mibit, .shell = ShellKind::hybrid}},
+    {"mibit/cone", {.method = Method::mibit, .shell = ShellKind::cone}},
+    {"mibit/no split", {.method = Method::mibit, .shell = ShellKind::cylinder, .monotoneSplit = false}},
+    {"linear", {.method = Method::linear}},
 };
 
 // The costliest property tests (an oracle distance per hit) run on the default search; every

@@ -10,9 +10,9 @@
 #include "io/scene_file.h"
 #include "io/text_files.h"
 #include "robot/clearance_map.h"
-#include "robot/picking.h"
 #include "robot/robot_argument.h"
 #include "scene/degenerate_objects.h"
+#include "scene/picking.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -93,7 +93,7 @@ void run(const Options& options) {
               app::counted(poses.size(), "pose").c_str(), collisions, collisions == 1 ? "collides" : "collide",
               worst.clearance, least);
   if (worst.object >= 0) {
-    const std::string name = robot::objectName(description, std::size_t(worst.object));
+    const std::string name = scene::objectName(description, std::size_t(worst.object));
     std::printf(" (object %lld%s%s%s)", static_cast<long long>(worst.object), name.empty() ? "" : " \"", name.c_str(),
                 name.empty() ? "" : "\"");
   }

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "common/tolerance_option.h"
-#include "io/output_set.h"
+#include "io/temporary_files.h"
 
 #include <CLI/CLI.hpp>
 

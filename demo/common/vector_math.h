@@ -7,18 +7,15 @@
 #include <algorithm>
 #include <cmath>
 
-namespace revolve {
+namespace revolve::app {
 
-// In revolve's namespace, beside Vec3, so that argument-dependent lookup finds them everywhere.
+// The demo's own, not the library's (whose namespace, revolve, argument-dependent lookup would
+// search): code in the demo's other namespaces names them with using-declarations.
 inline Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
 inline Vec3 operator*(float s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
 inline Vec3 operator*(Vec3 a, float s) { return {s * a.x, s * a.y, s * a.z}; }
-
-}  // namespace revolve
-
-namespace revolve::app {
 
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }

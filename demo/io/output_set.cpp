@@ -2,9 +2,9 @@
 
 #include "io/input_file.h"
 
-#include <atomic>
 #include <cerrno>
 #include <cstdarg>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -12,56 +12,9 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <csignal>
 
 namespace revolve::io {
 namespace {
-
-// The signal handler's table: fixed storage, lock-free atomics, so that the handler may read it
-// (POSIX allows unlink, kill and _exit in a handler, and lock-free atomic loads).
-constexpr int kSlots = 64;
-constexpr std::size_t kPathBytes = 4096;
-struct Slot {
-  std::atomic<bool> claimed{false};  // taken by a registration
-  std::atomic<bool> live{false};     // path complete: the handler removes it
-  char path[kPathBytes];
-};
-Slot gSlots[kSlots];
-std::atomic<pid_t> gChild{0};
-std::atomic<int> gHeld{0};     // > 0: a commit (or a temporary's creation) is under way
-std::atomic<int> gPending{0};  // a signal that arrived meanwhile
-static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free &&
-              std::atomic<pid_t>::is_always_lock_free);
-
-[[noreturn]] void cleanUpAndExit(int signal) {
-  if (const pid_t child = gChild.load(); child > 0) kill(child, SIGTERM);
-  for (Slot& slot : gSlots) {
-    if (slot.live.load()) unlink(slot.path);
-  }
-  _exit(128 + signal);
-}
-
-extern "C" void onSignal(int signal) {
-  if (gHeld.load() > 0) {
-    gPending.store(signal);
-    return;
-  }
-  cleanUpAndExit(signal);
-}
-
-// Signals wait while this lives (a commit must not stop half-way); one that came meanwhile is
-// acted on when the last HeldSignals ends.
-class HeldSignals {
- public:
-  HeldSignals() { ++gHeld; }
-  ~HeldSignals() {
-    if (--gHeld == 0) {
-      if (const int signal = gPending.exchange(0); signal != 0) cleanUpAndExit(signal);
-    }
-  }
-  HeldSignals(const HeldSignals&) = delete;
-  HeldSignals& operator=(const HeldSignals&) = delete;
-};
 
 struct Identity {
   bool exists = false;
@@ -90,69 +43,6 @@ bool sameFile(const Identity& a, const Identity& b) {
 std::string named(std::string_view option) { return option.empty() ? std::string("the output") : std::string(option); }
 
 }  // namespace
-
-void removeTemporariesOnSignals() {
-  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
-    struct sigaction previous {};
-    sigaction(signal, nullptr, &previous);
-    if (previous.sa_handler == SIG_IGN) continue;  // ignored by whoever started us (nohup): keep it so
-    struct sigaction action {};
-    action.sa_handler = onSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;  // a deferred signal must not make writes fail with EINTR
-    sigaction(signal, &action, nullptr);
-  }
-}
-
-TemporaryRegistration::TemporaryRegistration(const std::string& path) {
-  if (path.size() >= kPathBytes)
-    throw std::runtime_error(path.substr(0, 80) + "...: the path is too long for a temporary file");
-  for (int i = 0; i < kSlots; ++i) {
-    if (!gSlots[i].claimed.exchange(true)) {
-      std::memcpy(gSlots[i].path, path.c_str(), path.size() + 1);
-      gSlots[i].live.store(true);
-      slot_ = i;
-      return;
-    }
-  }
-  throw std::runtime_error(path + ": too many temporary files at once (" + std::to_string(kSlots) + ")");
-}
-
-TemporaryRegistration::~TemporaryRegistration() {
-  if (slot_ >= 0) {
-    gSlots[slot_].live.store(false);
-    gSlots[slot_].claimed.store(false);
-  }
-}
-
-TemporaryRegistration::TemporaryRegistration(TemporaryRegistration&& other) noexcept : slot_(other.slot_) {
-  other.slot_ = -1;
-}
-
-TemporaryRegistration& TemporaryRegistration::operator=(TemporaryRegistration&& other) noexcept {
-  if (this != &other) {
-    this->~TemporaryRegistration();
-    slot_ = other.slot_;
-    other.slot_ = -1;
-  }
-  return *this;
-}
-
-ChildRegistration::ChildRegistration(pid_t child) { gChild.store(child); }
-ChildRegistration::~ChildRegistration() { gChild.store(0); }
-
-ScratchFile::ScratchFile(std::string_view suffix) {
-  const HeldSignals held;  // no window in which the file exists unregistered
-  std::error_code code;
-  const std::filesystem::path folder = std::filesystem::temp_directory_path(code);
-  path_ = ((code ? std::filesystem::path("/tmp") : folder) / ("revolve-XXXXXX" + std::string(suffix))).string();
-  const int descriptor = mkstemps(path_.data(), int(suffix.size()));
-  if (descriptor < 0) throw std::runtime_error(path_ + ": cannot create a temporary file: " + std::strerror(errno));
-  close(descriptor);
-  registration_ = TemporaryRegistration(path_);
-}
-
-ScratchFile::~ScratchFile() { unlink(path_.c_str()); }
 
 void OutputStream::fail(int error) const {
   throw std::runtime_error(output_ + ": write failed: " + std::strerror(error));

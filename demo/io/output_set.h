@@ -3,13 +3,15 @@
 // soon as the output is named: that is also the check that its folder takes a new file, before any
 // work. commit() renames them all into place once every step has succeeded; until then nothing a
 // user can see has changed, and on an exception, or on SIGINT, SIGTERM or SIGHUP, the temporaries
-// are removed and the tool exits (status 130, 143 or 129 on a signal).
+// are removed and the tool exits (status 130, 143 or 129 on a signal: io/temporary_files.h).
 //
 // An output is refused, with one line naming it, when its path is empty, names something other
 // than a regular file (a directory, /dev/null), or is the same file as an input or as another
 // output of the run: by filesystem identity (device and inode) where both exist, by the
 // normalised path (symbolic links resolved) otherwise.
 #pragma once
+
+#include "io/temporary_files.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -19,51 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include <sys/types.h>
-
 namespace revolve::io {
-
-// Installs the handler that removes registered temporaries and exits 128 + signal on SIGINT,
-// SIGTERM and SIGHUP. Idempotent; the tools call it first thing in main().
-void removeTemporariesOnSignals();
-
-// A file path the signal handler removes if the process is interrupted while this lives. The
-// handler reads a fixed table (no allocation, no locks: it only calls unlink() and _exit()).
-class TemporaryRegistration {
- public:
-  TemporaryRegistration() = default;
-  explicit TemporaryRegistration(const std::string& path);  // std::runtime_error if the table is full
-  ~TemporaryRegistration();
-  TemporaryRegistration(TemporaryRegistration&& other) noexcept;
-  TemporaryRegistration& operator=(TemporaryRegistration&& other) noexcept;
-
- private:
-  int slot_ = -1;
-};
-
-// A child process the signal handler terminates (SIGTERM) before exiting, while this lives.
-class ChildRegistration {
- public:
-  explicit ChildRegistration(pid_t child);
-  ~ChildRegistration();
-  ChildRegistration(const ChildRegistration&) = delete;
-  ChildRegistration& operator=(const ChildRegistration&) = delete;
-};
-
-// A private file in the system's temporary folder (TMPDIR), removed when this goes out of scope
-// or the process is interrupted.
-class ScratchFile {
- public:
-  explicit ScratchFile(std::string_view suffix);
-  ~ScratchFile();
-  ScratchFile(const ScratchFile&) = delete;
-  ScratchFile& operator=(const ScratchFile&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  TemporaryRegistration registration_;
-};
 
 // A stream into an output's temporary that checks every write: the first failure (a full disk,
 // a file-size limit) throws std::runtime_error "<output>: write failed: <cause>" at once, so a

@@ -2,6 +2,7 @@
 
 #include "io/output_set.h"
 #include "io/text_files.h"
+#include "scene/transform.h"
 
 #include <algorithm>
 #include <charconv>
@@ -40,7 +41,7 @@ std::string colour(const Rgb& c, double scale = 1) {
 // v3*): row i is the image of POV-Ray's basis vector i. With the axis swap P (its own inverse), the
 // object's map in POV-Ray's axes is P M P.
 std::string povMatrix(const SceneTransform& transform) {
-  const auto m = linearPart(transform);
+  const scene::Matrix3d m = scene::linearPart(transform);
   constexpr int swap[3] = {0, 2, 1};
   std::string text = "matrix <";
   for (int row = 0; row < 3; ++row) {

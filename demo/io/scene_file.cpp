@@ -3,6 +3,7 @@
 #include "io/curve_polyline.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
+#include "scene/transform.h"
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +12,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <numbers>
 #include <optional>
 #include <string>
 
@@ -317,39 +317,6 @@ SceneEnvironment readEnvironment(const Reader& in, const Json& json) {
 
 }  // namespace
 
-Matrix3d rotationOf(const SceneTransform& transform) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const auto& k = transform.rotateAxis;
-  return {Vec3d{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-          Vec3d{k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-          Vec3d{k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
-}
-
-Matrix3d linearPart(const SceneTransform& transform) {
-  Matrix3d m = rotationOf(transform);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[i][j] *= transform.scale[j];
-  }
-  return m;
-}
-
-double worldReach(const Profile& profile, const SceneTransform& transform) {
-  double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-  for (const Point2 p : profile.points())
-    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-  const Matrix3d m = linearPart(transform);
-  double reach = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
-    for (int a = 0; a < 3; ++a) {
-      reach = std::max(reach,
-                       std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
-    }
-  }
-  return reach;
-}
-
 // Names appear in the tools' one-line messages: a control character (a newline, say) would break
 // the line, so it is refused where it is written.
 void checkName(const Reader& in, std::string_view name, const std::string& path) {
@@ -403,7 +370,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     }
     object.transform = readTransform(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
-    if (const double reach = worldReach(scene.profiles[object.profile].profile, object.transform);
+    if (const double reach = scene::worldReach(scene.profiles[object.profile].profile, object.transform);
         !(reach <= app::kMaxWorldCoordinate)) {
       char text[32];
       std::snprintf(text, sizeof text, "%.3g", reach);  // computed: three digits say it

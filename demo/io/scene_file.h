@@ -69,24 +69,14 @@ struct SceneMaterial {
   Rgb tint{1, 1, 1};     // glass: transmittance a crossing of its surface keeps, in [0, 1]
 };
 
-// Object to world: x -> translate + rotate(axis, degrees) (scale * x).
+// Object to world: x -> translate + rotate(axis, degrees) (scale * x); as matrices in
+// scene/transform.h.
 struct SceneTransform {
   Vec3d scale{1, 1, 1};       // each > 0
   Vec3d rotateAxis{0, 0, 1};  // non-zero; normalised by the reader
   double rotateDegrees = 0;
   Vec3d translate{0, 0, 0};
 };
-
-using Matrix3d = std::array<Vec3d, 3>;  // row by row
-
-// The transform's rotation (Rodrigues' formula about its unit axis) and its linear part, rotate *
-// scale, in double.
-Matrix3d rotationOf(const SceneTransform& transform);
-Matrix3d linearPart(const SceneTransform& transform);
-
-// The largest |coordinate| any point of `profile` reaches placed by `transform`: the corners of
-// its box [-rmax, rmax]^2 x [zmin, zmax], carried to the world.
-double worldReach(const Profile& profile, const SceneTransform& transform);
 
 struct SceneObject {
   std::string name;          // empty unless given

@@ -2,6 +2,7 @@
 
 #include "common/tolerance_option.h"
 #include "io/curve_polyline.h"
+#include "scene/transform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,22 +12,8 @@
 #include <stdexcept>
 
 namespace revolve::render {
-namespace {
 
 using Vec3d = io::Vec3d;
-
-// The rotation of the object's transform applied to v (Rodrigues' formula about the unit axis).
-Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0, c = std::cos(theta), s = std::sin(theta);
-  const Vec3d& k = transform.rotateAxis;
-  const Vec3d kv{k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
-  const double along = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-  Vec3d out;
-  for (int i = 0; i < 3; ++i) out[i] = v[i] * c + kv[i] * s + k[i] * along * (1 - c);
-  return out;
-}
-
-}  // namespace
 
 CurveTolerance parseCurveTolerance(const std::string& text) {
   const std::optional<app::ToleranceOption> option = app::toleranceOption(text, true);
@@ -50,7 +37,7 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
       rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     const io::SceneTransform& t = object.transform;
     const double scale = std::max({t.scale[0], t.scale[1], t.scale[2]});
-    const Vec3d middle = rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
+    const Vec3d middle = scene::rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
     const double radius = scale * std::hypot(rMax, 0.5 * (zHigh - zLow));
     double distance = 0;
     for (int i = 0; i < 3; ++i) {

@@ -7,6 +7,10 @@
 namespace revolve::render {
 
 using namespace app;
+// Declared here, beside Color's own operators, which would otherwise hide the directive's.
+using app::operator+;
+using app::operator-;
+using app::operator*;
 
 namespace {
 Color toColor(const io::Rgb& c) { return {float(c[0]), float(c[1]), float(c[2])}; }

@@ -7,6 +7,10 @@
 namespace revolve::render {
 
 using namespace app;
+// Declared here, beside Color's own operators, which would otherwise hide the directive's.
+using app::operator+;
+using app::operator-;
+using app::operator*;
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include "io/scene_file.h"
 #include "progress.h"
 #include "renderer.h"
-#include "robot/picking.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
+#include "scene/picking.h"
 
 #include <tbb/info.h>
 #include <CLI/CLI.hpp>
@@ -49,12 +49,10 @@ scene::BuildSettings buildSettings(const Options& options) {
   build.mesh = options.geometry == "mesh";
   build.embreeCone = options.geometry == "embree-cone";
   build.slices = options.slices;
-  build.options.method = options.geometry == "linear"   ? Method::linear
-                         : options.geometry == "kajiya" ? Method::kajiya
-                                                        : Method::mibit;
-  build.options.shell = options.shell == "cone"     ? ShellKind::cone
-                        : options.shell == "hybrid" ? ShellKind::hybrid
-                                                    : ShellKind::cylinder;
+  // --geometry mesh and embree-cone name no Method: the default stays, unused. The command line
+  // has checked both names.
+  if (const std::optional<Method> method = methodNamed(options.geometry)) build.options.method = *method;
+  build.options.shell = *shellKindNamed(options.shell);
   build.options.subdivisions = options.subdivisions;
   build.options.monotoneSplit = !options.noMonotoneSplit;
   build.options.rangeSearch = !options.noRangeSearch;
@@ -175,7 +173,7 @@ void checkKajiya(const Options& options, const io::SceneDescription& description
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
   const scene::EmbreeScene built(description, buildSettings(options));
-  const std::optional<robot::Pick> picked = robot::pick(description, built, width, height, x, y);
+  const std::optional<scene::Pick> picked = scene::pick(description, built, width, height, x, y);
   if (!picked) {
     std::printf("nothing\n");
     return;

@@ -7,11 +7,6 @@
 #include <vector>
 
 namespace revolve::robot {
-Vec3d mapVector(const Matrix3& m, const Vec3d& v) {
-  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
-          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
-}
-
 std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
   const auto& k = transform.rotateAxis;  // unit (the reader normalises it)
   const double turns = std::fmod(transform.rotateDegrees, 360.0);
@@ -23,12 +18,8 @@ std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
 
 PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform)
     : shape_(&shape), translate_(transform.translate) {
-  // The inverse of rotation * scale is scale^-1 * rotation^T.
-  linear_ = io::linearPart(transform);
-  const Matrix3 rotation = io::rotationOf(transform);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) inverse_[i][j] = rotation[j][i] / transform.scale[i];
-  }
+  linear_ = scene::linearPart(transform);
+  inverse_ = scene::inverseLinearPart(transform);
   smallestScale_ = std::min({transform.scale[0], transform.scale[1], transform.scale[2]});
   const std::optional<MeridianScale> upright = uprightScale(transform);
   upright_ = upright.has_value();
@@ -44,7 +35,7 @@ PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform
   double size = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
-    const Vec3d rotated = mapVector(linear_, local);
+    const Vec3d rotated = linear_.apply(local);
     for (int a = 0; a < 3; ++a) {
       const double w = rotated[a] + translate_[a];
       box_.lower[a] = std::min(box_.lower[a], w);
@@ -75,11 +66,11 @@ ObstacleClearance PlacedShape::uprightClearance(const RobotBody& robot) const {
 }
 
 std::pair<double, Vec3d> PlacedShape::distanceFrom(const Vec3d& p) const {
-  const Vec3d local = mapVector(inverse_, {p[0] - translate_[0], p[1] - translate_[1], p[2] - translate_[2]});
+  const Vec3d local = inverse_.apply(Vec3d{p[0] - translate_[0], p[1] - translate_[1], p[2] - translate_[2]});
   const double rho = std::hypot(local[0], local[1]);
   const MeridianPoint m = closestMeridianPoint(*shape_, {rho, local[2]});
   const double cosPhi = rho > 0 ? local[0] / rho : 1.0, sinPhi = rho > 0 ? local[1] / rho : 0.0;
-  const Vec3d surface = mapVector(linear_, {m.point.r * cosPhi, m.point.r * sinPhi, m.point.z});
+  const Vec3d surface = linear_.apply(Vec3d{m.point.r * cosPhi, m.point.r * sinPhi, m.point.z});
   // |L v| >= (smallest scale) |v| for L = rotation * scale: a lower bound, exact for equal scales.
   return {smallestScale_ * m.distance,
           {surface[0] + translate_[0], surface[1] + translate_[1], surface[2] + translate_[2]}};

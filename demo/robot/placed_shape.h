@@ -12,17 +12,13 @@
 
 #include "io/scene_file.h"
 #include "robot/robot_body.h"
+#include "scene/transform.h"
 
 #include <revolve/revolve.h>
 
 #include <optional>
 
 namespace revolve::robot {
-
-using Matrix3 = std::array<Vec3d, 3>;
-
-// The object-to-world linear map, rotate(axis, degrees) * scale, is io::linearPart.
-Vec3d mapVector(const Matrix3& m, const Vec3d& v);
 
 // The meridian scale of an upright placement (the axis stays vertical: turned only about z, by no
 // angle, or half a turn about a horizontal axis, with equal x and y scales); nullopt when tilted.
@@ -47,7 +43,7 @@ class PlacedShape {
   std::pair<double, Vec3d> distanceFrom(const Vec3d& p) const;
 
   const Shape* shape_;
-  Matrix3 linear_{}, inverse_{};
+  scene::Matrix3d linear_{}, inverse_{};  // object to world (scene::linearPart), world to object
   Vec3d translate_{};
   double smallestScale_ = 1;
   bool upright_ = false;

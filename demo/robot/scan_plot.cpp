@@ -1,8 +1,10 @@
 #include "robot/scan_plot.h"
 
+#include "io/temporary_files.h"
 #include "io/text_files.h"
 #include "robot/placed_shape.h"
 #include "robot/sensor_rig.h"
+#include "scene/transform.h"
 
 #include <nlohmann/json.hpp>
 
@@ -95,14 +97,14 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
   std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) { return a.top < b.top; });
 
   for (const io::SceneObject& object : scene.objects) {
-    const Matrix3 linear = io::linearPart(object.transform);
+    const scene::Matrix3d linear = scene::linearPart(object.transform);
     const auto& t = object.transform.translate;
     std::vector<Point> samples;
     constexpr int kAzimuths = 96;  // outlines within 0.05% of a circle's radius
     for (const Point2 p : scene.profiles[object.profile].profile.points()) {
       for (int k = 0; k < kAzimuths; ++k) {
         const double phi = 2 * std::numbers::pi * k / kAzimuths;
-        const Vec3d w = mapVector(linear, {p.r * std::cos(phi), p.r * std::sin(phi), p.z});
+        const Vec3d w = linear.apply(Vec3d{p.r * std::cos(phi), p.r * std::sin(phi), p.z});
         samples.push_back({w[0] + t[0], w[1] + t[1]});
       }
     }

@@ -5,6 +5,7 @@
 
 #include "io/poses_file.h"
 #include "io/sensor_file.h"
+#include "scene/transform.h"
 
 #include <array>
 #include <cmath>
@@ -16,13 +17,9 @@ using Vec3d = std::array<double, 3>;
 // A rotation (world from sensor) and the sensor's origin in the world.
 struct SensorFrame {
   Vec3d origin{};
-  std::array<Vec3d, 3> rows{};  // the rotation matrix, row by row
+  scene::Matrix3d rotation{};
 
-  Vec3d rotate(const Vec3d& v) const {
-    return {rows[0][0] * v[0] + rows[0][1] * v[1] + rows[0][2] * v[2],
-            rows[1][0] * v[0] + rows[1][1] * v[1] + rows[1][2] * v[2],
-            rows[2][0] * v[0] + rows[2][1] * v[1] + rows[2][2] * v[2]};
-  }
+  Vec3d rotate(const Vec3d& v) const { return rotation.apply(v); }
 };
 
 // The unit direction of the beam at `azimuth` (counter-clockwise about the sensor's +Z from its +X)
@@ -34,28 +31,10 @@ inline Vec3d beamDirection(double azimuth, double elevation) {
 // World from sensor: the robot at (x, y, z) turned by yaw about +Z, carrying the sensor at its
 // mounting position turned by Rz(yaw) Ry(pitch) Rx(roll) (ROS's fixed-axis roll, pitch, yaw).
 inline SensorFrame sensorFrame(const io::SensorPose& mount, const io::RobotPose& pose) {
-  const auto rz = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{std::cos(a), -std::sin(a), 0}, Vec3d{std::sin(a), std::cos(a), 0},
-                                Vec3d{0, 0, 1}};
-  };
-  const auto ry = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{std::cos(a), 0, std::sin(a)}, Vec3d{0, 1, 0},
-                                Vec3d{-std::sin(a), 0, std::cos(a)}};
-  };
-  const auto rx = [](double a) {
-    return std::array<Vec3d, 3>{Vec3d{1, 0, 0}, Vec3d{0, std::cos(a), -std::sin(a)},
-                                Vec3d{0, std::sin(a), std::cos(a)}};
-  };
-  const auto multiply = [](const std::array<Vec3d, 3>& a, const std::array<Vec3d, 3>& b) {
-    std::array<Vec3d, 3> c{};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) c[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
-    }
-    return c;
-  };
-  const std::array<Vec3d, 3> robot = rz(pose.yaw);
+  const scene::Matrix3d robot = scene::rotationAboutZ(pose.yaw);
   SensorFrame frame;
-  frame.rows = multiply(robot, multiply(rz(mount.yaw), multiply(ry(mount.pitch), rx(mount.roll))));
+  frame.rotation = robot * (scene::rotationAboutZ(mount.yaw) *
+                            (scene::rotationAboutY(mount.pitch) * scene::rotationAboutX(mount.roll)));
   const SensorFrame robotOnly{{}, robot};
   const Vec3d mounted = robotOnly.rotate(mount.position);
   frame.origin = {pose.x + mounted[0], pose.y + mounted[1], pose.z + mounted[2]};

@@ -1,5 +1,7 @@
 #include "scene/degenerate_objects.h"
 
+#include "scene/transform.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -45,7 +47,7 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
     // Its world size against one float step (2^-23 relative) at its distance from the origin.
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
     for (const Point2 p : points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-    const io::Matrix3d linear = io::linearPart(object.transform);
+    const Matrix3d linear = linearPart(object.transform);
     double size = 0;
     for (int a = 0; a < 3; ++a) {
       // The box's extent along world axis a: |L_a0| + |L_a1| times 2 rmax, plus |L_a2| (zmax - zmin).
@@ -62,7 +64,7 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
     }
     if (camera && profile.closed()) {
       // The camera in the object's frame: L^-1 (from - T), L^-1 = S^-1 R^T.
-      const io::Matrix3d rotation = io::rotationOf(object.transform);
+      const Matrix3d rotation = rotationOf(object.transform);
       const auto& from = scene.camera.from;
       const io::Vec3d d{from[0] - t[0], from[1] - t[1], from[2] - t[2]};
       io::Vec3d local{};

@@ -4,6 +4,7 @@
 #include "common/memory_check.h"
 #include "common/ray_limits.h"
 #include "common/vector_math.h"
+#include "scene/transform.h"
 
 #include <tbb/parallel_for.h>
 
@@ -17,64 +18,15 @@
 
 namespace revolve::scene {
 
+using app::operator+;  // common/vector_math.h
+using app::operator-;
+using app::operator*;
+
 namespace {
 
 constexpr double kUnitRoundoff = 0x1p-24;  // float's u
 // pbrt-v4's gamma(n) = n u / (1 - n u): the relative error bound of n float operations.
 constexpr double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
-
-struct Matrix3 {
-  double m[3][3];
-  Vec3 apply(Vec3 v) const {
-    return {float(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z), float(m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z),
-            float(m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z)};
-  }
-  // |M| |v| per row: bounds on how an error vector (or a magnitude) maps through M.
-  Vec3 applyAbsolute(Vec3 v) const {
-    return {float(std::abs(m[0][0]) * v.x + std::abs(m[0][1]) * v.y + std::abs(m[0][2]) * v.z),
-            float(std::abs(m[1][0]) * v.x + std::abs(m[1][1]) * v.y + std::abs(m[1][2]) * v.z),
-            float(std::abs(m[2][0]) * v.x + std::abs(m[2][1]) * v.y + std::abs(m[2][2]) * v.z)};
-  }
-  double infinityNorm() const {
-    double worst = 0;
-    for (const auto& row : m) worst = std::max(worst, std::abs(row[0]) + std::abs(row[1]) + std::abs(row[2]));
-    return worst;
-  }
-};
-
-Matrix3 inverse(const Matrix3& a) {
-  const auto& m = a.m;
-  const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-  Matrix3 r;
-  r.m[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
-  r.m[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
-  r.m[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
-  r.m[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / det;
-  r.m[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
-  r.m[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
-  r.m[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / det;
-  r.m[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
-  r.m[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
-  return r;
-}
-
-// rotate(axis, degrees) * scale, rounded to the floats Embree will use.
-Matrix3 floatLinearPart(const io::SceneTransform& transform) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const auto& k = transform.rotateAxis;
-  const double rotation[3][3] = {
-      {c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
-      {k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
-      {k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
-  Matrix3 m;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m.m[i][j] = float(rotation[i][j] * transform.scale[j]);
-  }
-  return m;
-}
 
 Vec3 toVec3(const io::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 
@@ -182,7 +134,7 @@ struct EmbreeScene::Prototype {
 
 struct EmbreeScene::Instance {
   std::uint32_t prototype = 0, material = 0;
-  Matrix3 linear{}, normalMatrix{};  // object to world, and its inverse transpose for normals
+  Matrix3d linear{}, normalMatrix{};  // object to world, and its inverse transpose for normals
   Vec3 translate{};
   // Embree maps the world ray into object space in float: o' = L^-1 (o - T), d' = L^-1 d, each
   // component within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d|. Mapped back through L, the
@@ -270,8 +222,8 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     Instance instance;
     instance.prototype = std::uint32_t(prototypeOf[object.profile]);
     instance.material = std::uint32_t(object.material);
-    instance.linear = floatLinearPart(object.transform);
-    const Matrix3 inv = inverse(instance.linear);
+    instance.linear = roundedToFloat(linearPart(object.transform));  // the floats Embree will use
+    const Matrix3d inv = inverse(instance.linear);
     // What the reader's limits on scales guarantee (common/ray_limits.h), checked here too for
     // descriptions made in code: Embree's object-space rays stay within its range.
     if (!(inv.infinityNorm() * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
@@ -455,7 +407,7 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     const std::uint32_t segment = cone.profileSegment(rayHit.hit.primID, rayHit.hit.u, ng);
     hit.point = ray.origin + hit.t * ray.direction;
     const Vec3 offset = hit.point - instance.translate;  // world to object: L^-1 (p - T), L^-1 = normalMatrix^T
-    const Matrix3& n = instance.normalMatrix;
+    const Matrix3d& n = instance.normalMatrix;
     const Vec3 local{float(n.m[0][0] * offset.x + n.m[1][0] * offset.y + n.m[2][0] * offset.z),
                      float(n.m[0][1] * offset.x + n.m[1][1] * offset.y + n.m[2][1] * offset.z),
                      float(n.m[0][2] * offset.x + n.m[1][2] * offset.y + n.m[2][2] * offset.z)};

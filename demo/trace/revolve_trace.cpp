@@ -136,12 +136,9 @@ std::vector<std::optional<Hit>> traceAll(RTCScene scene, const std::vector<Ray>&
 
 BuildOptions buildOptions(const Options& options) {
   BuildOptions build;
-  build.method = options.method == "linear"   ? Method::linear
-                 : options.method == "kajiya" ? Method::kajiya
-                                              : Method::mibit;
-  build.shell = options.shell == "cylinder" ? ShellKind::cylinder
-                : options.shell == "cone"   ? ShellKind::cone
-                                            : ShellKind::hybrid;
+  // --method mesh names no Method: the default stays, unused. The command line has checked both names.
+  if (const std::optional<Method> method = methodNamed(options.method)) build.method = *method;
+  build.shell = *shellKindNamed(options.shell);
   build.subdivisions = options.subdivisions;
   return build;
 }

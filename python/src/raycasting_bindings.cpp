@@ -8,6 +8,7 @@
 
 #include "io/scene_file.h"
 #include "scene/degenerate_objects.h"
+#include "scene/transform.h"
 
 #include <pybind11/stl.h>
 
@@ -131,7 +132,7 @@ std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
     const io::SceneObject& object = description.objects[i];
     const io::SceneProfile& profile = description.profiles[object.profile];
     Shape shape = profile.spline ? Shape(*profile.spline) : Shape(profile.profile);
-    const io::Matrix3d linear = io::linearPart(object.transform);
+    const scene::Matrix3d linear = scene::linearPart(object.transform);
     double rows[16] = {};
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) rows[4 * r + c] = linear[r][c];

@@ -13,6 +13,7 @@
 #include "io/scene_file.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
+#include "scene/transform.h"
 
 #include <cmath>
 #include <cstddef>
@@ -20,6 +21,9 @@
 #include <string_view>
 
 using namespace revolve;
+using app::operator+;  // common/vector_math.h
+using app::operator-;
+using app::operator*;
 
 namespace {
 
@@ -111,7 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkUnit(object.transform.rotateAxis);
     for (const double s : object.transform.scale) FUZZ_CHECK(s >= app::kMinScale && s <= app::kMaxScale);
     checkPosition(object.transform.translate);
-    FUZZ_CHECK(io::worldReach(scene.profiles[object.profile].profile, object.transform) <= app::kMaxWorldCoordinate);
+    FUZZ_CHECK(scene::worldReach(scene.profiles[object.profile].profile, object.transform) <= app::kMaxWorldCoordinate);
   }
   for (const io::SceneQuad& quad : scene.quads) {
     FUZZ_CHECK(quad.material < scene.materials.size());

@@ -82,7 +82,7 @@ inline void expectRefusal(const std::string& tool, const std::string& name, cons
                           const std::vector<std::string>& args, const std::string& expected) {
   const auto before = snapshot(dir);
   const std::set<std::string> entries = dir.entries();
-  const ProcessResult run = runProcess(tool, args, ProcessOptions{dir.path().string(), {}, -1}, 30);
+  const ProcessResult run = runProcess(tool, args, ProcessOptions{.directory = dir.path().string()}, 30);
   EXPECT_EQ(run.status, 1) << run.err;
   EXPECT_EQ(lineCount(run.err), 1u) << run.err;
   EXPECT_THAT(run.err, ::testing::StartsWith(name + ": "));

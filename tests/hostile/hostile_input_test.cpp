@@ -39,7 +39,7 @@ const std::string kLidar = REVOLVE_LIDAR_PATH, kRender = REVOLVE_RENDER_PATH, kT
                   kClearance = REVOLVE_CLEARANCE_PATH;
 
 ProcessResult runIn(const ScratchDirectory& dir, const std::string& tool, const std::vector<std::string>& args) {
-  return runProcess(tool, args, ProcessOptions{dir.path().string(), {}, -1}, 60);
+  return runProcess(tool, args, ProcessOptions{.directory = dir.path().string()}, 60);
 }
 
 // ---------------------------------------------------------------------------------------------

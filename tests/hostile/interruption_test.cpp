@@ -62,7 +62,7 @@ TEST(Signals, ALidarRunStoppedWhileWritingLeavesNoTemporaryAndExits128PlusTheSig
     RunningProcess lidar(
         kLidar,
         {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--plot", "scan.png"},
-        ProcessOptions{dir.path().string(), {"TMPDIR=" + temporary.path().string()}, -1});
+        ProcessOptions{.directory = dir.path().string(), .environment = {"TMPDIR=" + temporary.path().string()}});
     ASSERT_TRUE(waitForFile(dir, "scan.pcd.tmp-", 1 << 20, lidar)) << "the scan never started: " << lidar.errSoFar();
     EXPECT_FALSE(temporary.entries().empty()) << "the plot's data is being written to TMPDIR";
     lidar.signal(signal);
@@ -79,7 +79,7 @@ TEST(Signals, ARenderStoppedMidwayLeavesNoTemporaryAndExits143) {
   dir.write("scene.json", kPoleScene);
   const std::set<std::string> before = dir.entries();
   RunningProcess render(kRender, {"scene.json", "-o", "out.png", "--width", "640", "--height", "480", "--spp", "4096"},
-                        ProcessOptions{dir.path().string(), {}, -1});
+                        ProcessOptions{.directory = dir.path().string()});
   ASSERT_TRUE(waitForFile(dir, "out.png.tmp-", 0, render)) << render.errSoFar();
   std::this_thread::sleep_for(std::chrono::milliseconds(100));  // into the rendering
   render.signal(SIGTERM);
@@ -99,9 +99,9 @@ TEST(AllOrNone, APlotThatFailsAfterTheScanLeavesNoScanEither) {
   dir.write("old.csv", "an existing scan");
   const std::set<std::string> before = dir.entries();
   for (const char* output : {"old.csv", "new.csv"}) {
-    const ProcessResult run =
-        runProcess(kLidar, {"scene.json", "--sensor", "sensor.json", "-o", output, "--plot", "plot.png"},
-                   ProcessOptions{dir.path().string(), {"PYTHONPATH=" + python.path().string()}, -1}, 60);
+    const ProcessResult run = runProcess(
+        kLidar, {"scene.json", "--sensor", "sensor.json", "-o", output, "--plot", "plot.png"},
+        ProcessOptions{.directory = dir.path().string(), .environment = {"PYTHONPATH=" + python.path().string()}}, 60);
     EXPECT_EQ(run.status, 1) << run.err;
     EXPECT_EQ(lineCount(run.err), 1u) << run.err;
     EXPECT_THAT(run.err, StartsWith("revolve-lidar: plot.png: revolve-lidar-plot failed: "));
@@ -124,18 +124,18 @@ TEST(FullDisk, AFailedWriteIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
   const ProcessResult lidar = runProcess(
       kLidar,
       {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd", "--pcd-data", "binary"},
-      ProcessOptions{dir.path().string(), {}, 1 << 20}, 60);
+      ProcessOptions{.directory = dir.path().string(), .fileSizeLimit = 1 << 20}, 60);
   EXPECT_EQ(lidar.status, 1);
   EXPECT_EQ(lidar.err, "revolve-lidar: scan.pcd: write failed: File too large\n");
   const ProcessResult render =
       runProcess(kRender, {"scene.json", "-o", "image.exr", "--width", "256", "--height", "192"},
-                 ProcessOptions{dir.path().string(), {}, 4096}, 60);
+                 ProcessOptions{.directory = dir.path().string(), .fileSizeLimit = 4096}, 60);
   EXPECT_EQ(render.status, 1);
   EXPECT_EQ(lineCount(render.err), 1u) << render.err;
   EXPECT_THAT(render.err, StartsWith("revolve-render: image.exr: write failed: "));
   // A PNG (6.5 KB at this size) went through OpenImageIO's PNG writer, which ignored the failure.
   const ProcessResult png = runProcess(kRender, {"scene.json", "-o", "image.png", "--width", "256", "--height", "192"},
-                                       ProcessOptions{dir.path().string(), {}, 4096}, 60);
+                                       ProcessOptions{.directory = dir.path().string(), .fileSizeLimit = 4096}, 60);
   EXPECT_EQ(png.status, 1);
   EXPECT_EQ(png.err, "revolve-render: image.png: write failed: File too large\n");
   EXPECT_EQ(dir.entries(), before) << "a partial file or a temporary was left";
@@ -160,11 +160,11 @@ TEST(FullDisk, AFullFileSystemIsOneLineNamingTheOutputAndLeavesNoPartialFile) {
       "ls -A full; cat full/scan.pcd; exit $status\n";
   ProcessResult run =
       runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kLidar},
-                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+                 ProcessOptions{.directory = dir.path().string()}, 60);
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
     run =
         runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kLidar},
-                   ProcessOptions{dir.path().string(), {}, -1}, 60);
+                   ProcessOptions{.directory = dir.path().string()}, 60);
   }
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
   EXPECT_EQ(run.status, 1);
@@ -192,7 +192,8 @@ std::optional<ProcessResult> runOnAFullFileSystem(const ScratchDirectory& dir, c
   shell.insert(shell.end(), args.begin(), args.end());
   const auto unshare = [&](std::vector<std::string> namespaces) {
     namespaces.insert(namespaces.end(), shell.begin(), shell.end());
-    return runProcess("/usr/bin/unshare", namespaces, ProcessOptions{dir.path().string(), environment, -1}, 120);
+    return runProcess("/usr/bin/unshare", namespaces,
+                      ProcessOptions{.directory = dir.path().string(), .environment = environment}, 120);
   };
   ProcessResult run = unshare({"--mount", "--propagation", "private"});
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) run = unshare({"--user", "--map-root-user", "--mount"});
@@ -311,11 +312,11 @@ TEST(FullDisk, APngThatDoesNotFitLeavesTheOldOneAndFailsInOneLine) {
       "ls -A small; cat small/z.png; exit $status\n";
   ProcessResult run =
       runProcess("/usr/bin/unshare", {"--mount", "--propagation", "private", "/bin/sh", "-c", script, "sh", kRender},
-                 ProcessOptions{dir.path().string(), {}, -1}, 60);
+                 ProcessOptions{.directory = dir.path().string()}, 60);
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) {
     run =
         runProcess("/usr/bin/unshare", {"--user", "--map-root-user", "--mount", "/bin/sh", "-c", script, "sh", kRender},
-                   ProcessOptions{dir.path().string(), {}, -1}, 60);
+                   ProcessOptions{.directory = dir.path().string()}, 60);
   }
   if (run.status == 77 || run.err.rfind("unshare:", 0) == 0) GTEST_SKIP() << "cannot mount a tmpfs here: " << run.err;
   EXPECT_EQ(run.status, 1);
@@ -340,10 +341,11 @@ TEST(Streaming, AScansMemoryDoesNotGrowWithItsPoses) {
       "ASAN_OPTIONS=" + std::string(asan != nullptr ? std::string(asan) + ":" : "") + "quarantine_size_mb=0";
   for (int i = 0; i < 2; ++i) {
     dir.write("poses.csv", testing::manyPoses(poses[i]));
-    const ProcessResult run = runProcess(REVOLVE_PEAK_MEMORY_PATH,
-                                         {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses",
-                                          "poses.csv", "-o", "scan.pcd", "--pcd-data", "binary"},
-                                         ProcessOptions{dir.path().string(), {asanOptions}, -1}, 60);
+    const ProcessResult run =
+        runProcess(REVOLVE_PEAK_MEMORY_PATH,
+                   {dir / "peak.txt", kLidar, "scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o",
+                    "scan.pcd", "--pcd-data", "binary"},
+                   ProcessOptions{.directory = dir.path().string(), .environment = {asanOptions}}, 60);
     ASSERT_EQ(run.status, 0) << run.err;
     peak[i] = std::stol(readWholeFile(dir / "peak.txt"));
     std::filesystem::remove(dir / "peak.txt");

@@ -1,6 +1,6 @@
 // Picking: the object under a pixel, against a ray built here from the camera's definition (pixel
 // centres, vertical field of view, (0, 0) at the top left) and the closed-form hit of a pole.
-#include "robot/picking.h"
+#include "scene/picking.h"
 #include "robot_scenes.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@ TEST(PickingTest, ThePixelsRayPicksThePoleTheFloorOrNothing) {
   const Vec3d o{0, -5, 1};
   const std::optional<double> t = testing::rayCappedCylinder(o, u, 0.1, 0, 0.25, 0, 2);
   ASSERT_TRUE(t.has_value());
-  const std::optional<robot::Pick> picked = robot::pick(scene, built, width, height, x, y);
+  const std::optional<scene::Pick> picked = scene::pick(scene, built, width, height, x, y);
   ASSERT_TRUE(picked.has_value());
   EXPECT_EQ(picked->object, 0u);
   EXPECT_EQ(picked->name, "pole");
@@ -37,13 +37,13 @@ TEST(PickingTest, ThePixelsRayPicksThePoleTheFloorOrNothing) {
   EXPECT_NEAR(picked->point.y, o[1] + *t * u[1], tolerance);
   EXPECT_NEAR(picked->point.z, o[2] + *t * u[2], tolerance);
   // The bottom row looks down at the floor: quads[0], object index objects.size() + 0.
-  const std::optional<robot::Pick> floor = robot::pick(scene, built, width, height, 2, height - 1);
+  const std::optional<scene::Pick> floor = scene::pick(scene, built, width, height, 2, height - 1);
   ASSERT_TRUE(floor.has_value());
   EXPECT_EQ(floor->object, 1u);
   EXPECT_EQ(floor->name, "quads[0]");
   EXPECT_NEAR(floor->point.z, 0, 1e-6);
   // The top row looks over everything.
-  EXPECT_FALSE(robot::pick(scene, built, width, height, 2, 0).has_value());
+  EXPECT_FALSE(scene::pick(scene, built, width, height, 2, 0).has_value());
 }
 
 }  // namespace

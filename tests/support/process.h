@@ -33,9 +33,9 @@ struct ProcessResult {
 };
 
 struct ProcessOptions {
-  std::string directory;                 // working directory ("": this process's)
-  std::vector<std::string> environment;  // "NAME=value" entries added to this process's environment
-  long fileSizeLimit = -1;               // bytes any file written may reach (-1: no limit)
+  std::string directory{};                 // working directory ("": this process's)
+  std::vector<std::string> environment{};  // "NAME=value" entries added to this process's environment
+  long fileSizeLimit = -1;                 // bytes any file written may reach (-1: no limit)
 };
 
 // A process started and not yet waited for.
@@ -163,7 +163,7 @@ inline ProcessResult runProcess(const std::string& program, const std::vector<st
 // Runs `program` with `args`, in `directory` when one is given.
 inline ProcessResult runProcess(const std::string& program, const std::vector<std::string>& args,
                                 const std::string& directory = "") {
-  return runProcess(program, args, ProcessOptions{directory, {}, -1});
+  return runProcess(program, args, ProcessOptions{.directory = directory});
 }
 
 }  // namespace revolve::testing

@@ -108,7 +108,7 @@ class Profile {
   // profile within the tolerance. A linear spline gives its own points. curveParameters() records
   // where each point lies on the curve. Throws std::invalid_argument unless tolerance > 0 and
   // finite and at least 2^-40 of the curve's extent (double-precision chords resolve no finer).
-  static Profile fromCurve(const Spline& curve, double tolerance);
+  [[nodiscard]] static Profile fromCurve(const Spline& curve, double tolerance);
 
   std::span<const Point2> points() const noexcept { return points_; }
   std::size_t segmentCount() const noexcept { return points_.size() - 1; }
@@ -167,8 +167,8 @@ enum class SplineKind {
 
 // "linear", "quadratic", "bezier", "catmull-rom", "natural" (the names the scene file and
 // revolve-trace take), and back; nothing for an unknown name.
-const char* splineKindName(SplineKind kind) noexcept;
-std::optional<SplineKind> splineKindNamed(std::string_view name) noexcept;
+[[nodiscard]] const char* splineKindName(SplineKind kind) noexcept;
+[[nodiscard]] std::optional<SplineKind> splineKindNamed(std::string_view name) noexcept;
 
 class Spline {
  public:
@@ -206,7 +206,7 @@ class Spline {
   // Index in points() of the point where piece i starts (for messages and the readers' lines).
   std::size_t pieceStart(std::size_t piece) const noexcept { return pieceStart_[piece]; }
   // The point of piece `piece` at parameter u in [0, 1] (de Casteljau).
-  Point2 at(std::size_t piece, double u) const noexcept;
+  [[nodiscard]] Point2 at(std::size_t piece, double u) const noexcept;
   // Closed: the curve bounds a solid (its ends meet, or both lie on the axis).
   bool closed() const noexcept { return closed_; }
   const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
@@ -234,6 +234,13 @@ enum class ShellKind {
   cone,      // TC: truncated-cone shells, a band parallel to the node's chord
   hybrid,    // HY: per node the cheaper-to-test fit, by the paper's area / interval / factor-4 rule
 };
+
+// "mibit", "linear", "kajiya" and "cylinder", "cone", "hybrid" (the names the tools' --method,
+// --geometry and --shell take), and back; nothing for an unknown name.
+[[nodiscard]] const char* methodName(Method method) noexcept;
+[[nodiscard]] std::optional<Method> methodNamed(std::string_view name) noexcept;
+[[nodiscard]] const char* shellKindName(ShellKind shell) noexcept;
+[[nodiscard]] std::optional<ShellKind> shellKindNamed(std::string_view name) noexcept;
 
 struct BuildOptions {
   Method method = Method::mibit;
@@ -326,9 +333,9 @@ struct Hit {
 
 // Nearest hit of `ray` with the surface, or nothing. A ray with a non-finite or zero direction,
 // a non-finite origin, or tnear > tfar misses.
-std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
+[[nodiscard]] std::optional<Hit> intersect(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
 // Whether any hit with tnear <= t <= tfar exists.
-bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
+[[nodiscard]] bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexcept;
 // A hit's every attribute afterwards, from what a lean hit keeps (Geometry::Options): `ray` as it
 // was traced (its tnear and tfar before the call, which wrote t into tfar), the hit's `segment`
 // (Embree's primID) and its `t`. Equal bit for bit to the Hit intersect gives and to what the
@@ -336,7 +343,8 @@ bool occluded(const Shape& shape, const Ray& ray, Stats* stats = nullptr) noexce
 // instanced geometry: the object-space ray Embree handed the callback, which its rounding of the
 // transform makes; a ray transformed otherwise gives the hit on `segment` nearest to t). Nothing
 // when the ray does not meet that segment (or segment is no segment of the shape).
-std::optional<Hit> surfaceAttributes(const Shape& shape, const Ray& ray, std::uint32_t segment, float t) noexcept;
+[[nodiscard]] std::optional<Hit> surfaceAttributes(const Shape& shape, const Ray& ray, std::uint32_t segment,
+                                                   float t) noexcept;
 
 struct SurfacePoint {
   Vec3 point;  // closest point of the surface
@@ -345,7 +353,7 @@ struct SurfacePoint {
 };
 // Exact closest point of the surface to p (the 2-D closest point in p's meridian plane). p must be
 // finite; otherwise the distance is NaN.
-SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept;
+[[nodiscard]] SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept;
 
 // ---------------------------------------------------------------------------------------------
 // Secondary rays.
@@ -355,7 +363,7 @@ SurfacePoint closestPoint(const Shape& shape, Vec3 p) noexcept;
 // bound on that point's rounding error (as pbrt-v4's OffsetRayOrigin). A ray spawned from it with
 // tnear = 0 does not re-hit the surface it leaves, yet finds every other surface, including the
 // same surface elsewhere. `normal` need not be unit length (Embree's Ng may be passed as is).
-Vec3 offsetRayOrigin(const Ray& ray, float t, Vec3 normal, Vec3 newDirection) noexcept;
+[[nodiscard]] Vec3 offsetRayOrigin(const Ray& ray, float t, Vec3 normal, Vec3 newDirection) noexcept;
 
 // ---------------------------------------------------------------------------------------------
 // Smooth shading normals.
@@ -394,7 +402,7 @@ class ShadingNormals {
   // parameters u, v (see Conventions; v is clamped to the segment). The azimuth comes from u, not
   // from a normal, so discs (whose geometric normal is the axis) shade right too. Precondition:
   // segment < the profile's segment count.
-  Vec3 normal(std::uint32_t segment, float u, float v) const noexcept;
+  [[nodiscard]] Vec3 normal(std::uint32_t segment, float u, float v) const noexcept;
 
   std::size_t segmentCount() const noexcept { return segmentStart_.size(); }
   std::size_t memoryBytes() const noexcept;
@@ -432,7 +440,7 @@ struct MeridianPoint {
 // The closest point of the profile polyline to `query` = (rho, z), rho >= 0, in double precision:
 // the distance from any point at distance rho from the axis and height z to the surface. A
 // non-finite query or rho < 0 gives a NaN distance.
-MeridianPoint closestMeridianPoint(const Shape& shape, Point2 query) noexcept;
+[[nodiscard]] MeridianPoint closestMeridianPoint(const Shape& shape, Point2 query) noexcept;
 
 // A solid vertical cylinder with flat ends (a robot's body), upright beside an upright shape: its
 // axis parallel to the shape's axis at distance `axisDistance`, radius `radius`, and heights
@@ -470,7 +478,7 @@ struct CylinderClearance {
 // from that rectangle to the scaled profile polyline. Segments are solved in closed form (a
 // vertex-to-edge distance when apart, the deepest point of the clipped segment when inside).
 // Preconditions as stated in the structs; a non-finite value or a violated one gives NaN.
-CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder,
-                                    MeridianScale scale = {}) noexcept;
+[[nodiscard]] CylinderClearance cylinderClearance(const Shape& shape, const UprightCylinder& cylinder,
+                                                  MeridianScale scale = {}) noexcept;
 
 }  // namespace revolve

@@ -94,16 +94,17 @@ struct ScenePoint {
   std::uint32_t segment;
 };
 using GeometryLookup = const Geometry* (*)(void* user, unsigned instID, unsigned geomID);
-std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup, void* user);
+[[nodiscard]] std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup,
+                                                     void* user);
 
 // A triangle mesh of the profile swept in `slices` steps (2 * segments * slices triangles, vertices
 // on the exact circles), committed and ready to attach: the tessellated baseline. Throws
 // std::invalid_argument when slices < 3 or the triangle count exceeds 32-bit indices.
-RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std::uint32_t slices);
+[[nodiscard]] RTCGeometry newTessellatedGeometry(RTCDevice device, const Profile& profile, std::uint32_t slices);
 // A bound on the Hausdorff distance between that mesh and the exact surface: r_max (1 - cos(pi /
 // slices)), the gap between a circle and its inscribed polygon at the largest radius; exact when
 // that radius lies on a vertical segment (elsewhere the gap normal to the surface is smaller).
-double tessellationError(const Profile& profile, std::uint32_t slices);
+[[nodiscard]] double tessellationError(const Profile& profile, std::uint32_t slices);
 
 // Embree's own linear cone curve (RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE) with its centre line on the z
 // axis: the baseline an Embree user tries first. Each profile segment that rises or falls is one
@@ -117,7 +118,8 @@ double tessellationError(const Profile& profile, std::uint32_t slices);
 // Why `profile` cannot be traced as one linear cone curve, naming the points concerned ("profile
 // point 3 (r = .., z = ..)"); nothing when it can. `pointName` is what the reason calls a point:
 // "polyline point" suits a profile made by Profile::fromCurve, whose points are not the curve's.
-std::optional<std::string> coneCurveLimitation(const Profile& profile, std::string_view pointName = "profile point");
+[[nodiscard]] std::optional<std::string> coneCurveLimitation(const Profile& profile,
+                                                             std::string_view pointName = "profile point");
 
 class ConeCurveGeometry {
  public:
@@ -128,11 +130,11 @@ class ConeCurveGeometry {
   ConeCurveGeometry(const ConeCurveGeometry&) = delete;
   ConeCurveGeometry& operator=(const ConeCurveGeometry&) = delete;
 
-  RTCGeometry handle() const noexcept { return geometry_; }
+  [[nodiscard]] RTCGeometry handle() const noexcept { return geometry_; }
   std::uint32_t coneCount() const noexcept { return std::uint32_t(rising_.size()); }
   // The profile segment (as Conventions number them) of a hit with Embree's primID, u and Ng: a hit
   // on an end disc (u exactly 0 or 1, Ng along the axis) is the horizontal segment it stands for.
-  std::uint32_t profileSegment(unsigned primID, float u, Vec3 ng) const noexcept;
+  [[nodiscard]] std::uint32_t profileSegment(unsigned primID, float u, Vec3 ng) const noexcept;
   // +1 or -1: Embree's Ng times this points to revolve's side (Conventions) for hits on cone primID.
   float normalSign(unsigned primID) const noexcept { return float(rising_[primID]); }
 

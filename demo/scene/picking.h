@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-namespace revolve::robot {
+namespace revolve::scene {
 
 struct Pick {
   std::uint32_t object = 0;  // the scene's object index (quads: objects + quad index)
@@ -20,10 +20,10 @@ struct Pick {
 
 // The pixel (x, y), counted from the top left of a width x height view through the scene's camera
 // (0 <= x < width, 0 <= y < height). Nothing hit: nullopt.
-std::optional<Pick> pick(const io::SceneDescription& description, const scene::EmbreeScene& scene, int width,
-                         int height, int x, int y);
+std::optional<Pick> pick(const io::SceneDescription& description, const EmbreeScene& scene, int width, int height,
+                         int x, int y);
 
 // The name an object index goes by in messages: the object's name, or "quads[k]".
 std::string objectName(const io::SceneDescription& description, std::size_t object);
 
-}  // namespace revolve::robot
+}  // namespace revolve::scene

@@ -1,6 +1,6 @@
-// Tests of the test oracle itself (tests/support/reference.h) against things known independently:
-// hand-computed hits, the closed-form primitives, inscribed polylines of curved surfaces and sphere
-// tracing of an exact distance function.
+// Tests of the test oracle itself, the long-double brute-force reference tracer (tests/support/reference.h),
+// against things known independently: hand-computed hits, the closed-form primitives, inscribed polylines of
+// curved surfaces and sphere tracing of an exact distance function.
 //
 // Tolerances. Every bound below comes from an error budget stated in `Budget`: a hit is found in
 // long double (unit roundoff u = 2^-64) as the root of an implicit function F of the point. Random
@@ -282,7 +282,7 @@ BudgetOf nearestPrimitiveBudget(std::span<const Point2> profile, const RefRay& r
 // ---------------------------------------------------------------------------------------------
 // Vertical segments: cylinders.
 
-TEST(ReferenceTest, VerticalSegmentHandCases) {
+TEST(OracleTest, VerticalSegmentHandCases) {
   const std::vector<Point2> up{{1, 0}, {1, 2}};
   const RefRay across = makeRay({-5, 0, 0.5}, {2, 0, 0});  // meets x = -1 at t = 2, x = 1 at t = 3
   EXPECT_TRUE(hitIs(across, intersectProfile(up, across), profileBudget(up, across), 2, {-1, 0, 0}));
@@ -302,7 +302,7 @@ TEST(ReferenceTest, VerticalSegmentHandCases) {
   EXPECT_TRUE(hitIs(diagonal, intersectProfile(up, diagonal), profileBudget(up, diagonal), 0.8L, {-0.6L, -0.8L, 0}));
 }
 
-TEST(ReferenceTest, VerticalSegmentMatchesCylinder) {
+TEST(OracleTest, VerticalSegmentMatchesCylinder) {
   const std::uint64_t seed = seedFor(0x5eed0001);
   TRACE_SEED(seed);
   Random random(seed);
@@ -322,7 +322,7 @@ TEST(ReferenceTest, VerticalSegmentMatchesCylinder) {
 // ---------------------------------------------------------------------------------------------
 // Oblique segments: cones.
 
-TEST(ReferenceTest, ObliqueSegmentHandCases) {
+TEST(OracleTest, ObliqueSegmentHandCases) {
   const Real h = 1 / std::sqrt(Real(2));
   // The 45-degree cone r = z for z in [0, 1], apex at the origin: meridian normal (1, -1) / sqrt 2.
   const std::vector<Point2> cone{{0, 0}, {1, 1}};
@@ -360,7 +360,7 @@ TEST(ReferenceTest, ObliqueSegmentHandCases) {
   EXPECT_TRUE(hitIs(side, intersectCone(2, 0, 1, 1, side), coneBudget(2, 0, 1, 1, side), 3.5L, {-h, 0, h}));
 }
 
-TEST(ReferenceTest, ObliqueSegmentMatchesCone) {
+TEST(OracleTest, ObliqueSegmentMatchesCone) {
   const std::uint64_t seed = seedFor(0x5eed0002);
   TRACE_SEED(seed);
   Random random(seed);
@@ -382,7 +382,7 @@ TEST(ReferenceTest, ObliqueSegmentMatchesCone) {
 // ---------------------------------------------------------------------------------------------
 // Horizontal segments: discs and annuli.
 
-TEST(ReferenceTest, HorizontalSegmentHandCases) {
+TEST(OracleTest, HorizontalSegmentHandCases) {
   const std::vector<Point2> disc{{0, 1}, {2, 1}};  // listed outwards: normal -z
   const RefRay down = makeRay({0.5, 0, 3}, {0, 0, -2});
   EXPECT_TRUE(hitIs(down, intersectProfile(disc, down), profileBudget(disc, down), 1, {0, 0, -1}));
@@ -405,7 +405,7 @@ TEST(ReferenceTest, HorizontalSegmentHandCases) {
   EXPECT_TRUE(hitIs(oblique, intersectProfile(annulus, oblique), profileBudget(annulus, oblique), 2, {0, 0, -1}));
 }
 
-TEST(ReferenceTest, HorizontalSegmentMatchesDisc) {
+TEST(OracleTest, HorizontalSegmentMatchesDisc) {
   const std::uint64_t seed = seedFor(0x5eed0003);
   TRACE_SEED(seed);
   Random random(seed);
@@ -425,7 +425,7 @@ TEST(ReferenceTest, HorizontalSegmentMatchesDisc) {
 // ---------------------------------------------------------------------------------------------
 // Several segments.
 
-TEST(ReferenceTest, CappedCylinderMatchesUnionOfPieces) {
+TEST(OracleTest, CappedCylinderMatchesUnionOfPieces) {
   const std::uint64_t seed = seedFor(0x5eed0004);
   TRACE_SEED(seed);
   Random random(seed);
@@ -443,7 +443,7 @@ TEST(ReferenceTest, CappedCylinderMatchesUnionOfPieces) {
   EXPECT_GT(hits, 10000);  // the rays aim at the cylinder's box: most must hit
 }
 
-TEST(ReferenceTest, RandomProfilesMatchUnionOfPrimitives) {
+TEST(OracleTest, RandomProfilesMatchUnionOfPrimitives) {
   const std::uint64_t seed = seedFor(0x5eed0005);
   TRACE_SEED(seed);
   Random random(seed);
@@ -485,7 +485,7 @@ TEST(ReferenceTest, RandomProfilesMatchUnionOfPrimitives) {
   }
 }
 
-TEST(ReferenceTest, RangeTiesAndInvalidRays) {
+TEST(OracleTest, RangeTiesAndInvalidRays) {
   const std::vector<Point2> capped{{0, 0}, {1, 0}, {1, 2}, {0, 2}};
   const V3 o{-3, 0, 1};
   const V3 d{1, 0, 0};  // side at t = 2 and t = 4
@@ -527,7 +527,7 @@ TEST(ReferenceTest, RangeTiesAndInvalidRays) {
 // ---------------------------------------------------------------------------------------------
 // The library's rules for what rounding cannot decide.
 
-TEST(ReferenceTest, HorizontalRaysFollowTheHalfOpenHeightRule) {
+TEST(OracleTest, HorizontalRaysFollowTheHalfOpenHeightRule) {
   // A segment owns the heights [zmin, zmax): in the plane of a vertex, the circles of the segments
   // continuing upwards from it. Along x from (-3, 0, z), the circle of radius 1 is met at t = 2
   // and t = 4 (the quadratic t^2 - 6t + 8, exact).
@@ -556,7 +556,7 @@ TEST(ReferenceTest, HorizontalRaysFollowTheHalfOpenHeightRule) {
   EXPECT_TRUE(allHits(std::vector<Point2>{{1, 0}, {2, 1}, {1.5, 0}}, makeRay({-3, 0, 1}, {1, 0, 0})).empty());
 }
 
-TEST(ReferenceTest, RaysThroughAnApexTouchIt) {
+TEST(OracleTest, RaysThroughAnApexTouchIt) {
   // The open cone from the apex (0, 0, 1) down to radius 0.5 at z = 0: its only segment meets the
   // axis at the apex.
   const std::vector<Point2> cone{{0, 1}, {0.5, 0}};
@@ -587,7 +587,7 @@ TEST(ReferenceTest, RaysThroughAnApexTouchIt) {
 // ---------------------------------------------------------------------------------------------
 // Sphere.
 
-TEST(ReferenceTest, SphereHandCases) {
+TEST(OracleTest, SphereHandCases) {
   // Centre (0, 0, 1), radius 2.
   const RefRay up = makeRay({0, 0, -5}, {0, 0, 1});  // south pole z = -1 at t = 4, north z = 3 at t = 8
   EXPECT_TRUE(hitIs(up, intersectSphere(1, 2, up), sphereBudget(1, 2, up), 4, {0, 0, -1}));
@@ -661,7 +661,7 @@ std::vector<Point2> inscribedArc(Real centerR, Real centerZ, Real radius, Real f
   return points;
 }
 
-TEST(ReferenceTest, SphereMatchesInscribedPolyline) {
+TEST(OracleTest, SphereMatchesInscribedPolyline) {
   const std::uint64_t seed = seedFor(0x5eed0006);
   TRACE_SEED(seed);
   Random random(seed);
@@ -698,7 +698,7 @@ TEST(ReferenceTest, SphereMatchesInscribedPolyline) {
 // ---------------------------------------------------------------------------------------------
 // Torus.
 
-TEST(ReferenceTest, TorusHandCases) {
+TEST(OracleTest, TorusHandCases) {
   const Real R = 2;
   const Real rho = 0.5L;
   // Along x through both tubes: x = -2.5, -1.5, 1.5, 2.5 at t = 2.5, 3.5, 6.5, 7.5.
@@ -749,7 +749,7 @@ TEST(ReferenceTest, TorusHandCases) {
 // A double root is ill-conditioned: q is computed with an error up to dq = kRoundings u L^4
 // (L = |o| + |t| + R + rho), and q +- dq has its roots up to sqrt(2 dq / |q''|) from the tangent
 // point, so the oracle may answer any t within that (about 1e-7 here; observed about 1e-9).
-TEST(ReferenceTest, TorusTangentToItsEquators) {
+TEST(OracleTest, TorusTangentToItsEquators) {
   const Real R = 2;
   const Real rho = 0.5L;
   for (int k = 0; k < 24; ++k) {
@@ -784,7 +784,7 @@ TEST(ReferenceTest, TorusTangentToItsEquators) {
   }
 }
 
-TEST(ReferenceTest, TorusMatchesInscribedPolyline) {
+TEST(OracleTest, TorusMatchesInscribedPolyline) {
   const std::uint64_t seed = seedFor(0x5eed0007);
   TRACE_SEED(seed);
   Random random(seed);
@@ -837,7 +837,7 @@ struct TracedTorus {
   Real reachOfOrigins;
 };
 
-TEST(ReferenceTest, TorusMatchesSphereTracing) {
+TEST(OracleTest, TorusMatchesSphereTracing) {
   const std::uint64_t seed = seedFor(0x5eed0008);
   TRACE_SEED(seed);
   Random random(seed);
@@ -899,7 +899,7 @@ TEST(ReferenceTest, TorusMatchesSphereTracing) {
 // ---------------------------------------------------------------------------------------------
 // Distance.
 
-TEST(ReferenceTest, MeridianDistanceHandCases) {
+TEST(OracleTest, MeridianDistanceHandCases) {
   // Each answer is a hypot of differences of inputs below 8 (a projection and a clamp first): at
   // most 8 roundings, each <= u relative, of values below 8.
   const Real bound = 8 * kUnitRoundoff * 8;
