@@ -183,7 +183,7 @@ void rejectLowerHalf(const RTCFilterFunctionNArguments* args) {
 TEST(LeanHitsTest, FiltersSeeEveryAttributeAndFilteredHitsCarryThem) {
   std::mt19937_64 random(4103);
   for (RTCFilterFunctionN filter : {acceptAndCheck, rejectLowerHalf}) {
-    LeanScenes s(Shape(Profile(testing::hollowVase())));
+    LeanScenes s{Shape(Profile(testing::hollowVase()))};
     for (auto& geometry : s.geometries) {
       geometry->setIntersectFilter(filter);
       rtcCommitGeometry(geometry->handle());
