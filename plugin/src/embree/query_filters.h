@@ -24,6 +24,10 @@
 #include <cstddef>
 #include <cstring>
 
+// The functions the callbacks call on every ray are [[gnu::always_inline]]: they live outside the
+// per-instruction-set namespace (util/isa.h), so a copy the compiler chose to keep out of line would
+// be a weak symbol shared by the SSE2 and AVX2 objects, and the linker could hand the AVX2 one to a
+// processor without AVX2 (tests/isa_symbols.sh; GCC 14 kept argumentFilter out of line).
 namespace revolve::detail {
 
 // Whether the callbacks may read the query's arguments behind their own (Embree 4); set once,
@@ -46,7 +50,7 @@ struct EmbreeCallbackRecord {
 };
 
 template <class PublicArguments>
-inline const RTCIntersectArguments* queryArguments(const PublicArguments* args) noexcept {
+[[gnu::always_inline]] inline const RTCIntersectArguments* queryArguments(const PublicArguments* args) noexcept {
   if (!argumentsReachable.load(std::memory_order_relaxed)) return nullptr;
   const RTCIntersectArguments* arguments;
   std::memcpy(&arguments,
@@ -57,17 +61,20 @@ inline const RTCIntersectArguments* queryArguments(const PublicArguments* args) 
 
 // The argument filter Embree would call for a built-in geometry with this payload, or nullptr.
 template <class PublicArguments>
-inline RTCFilterFunctionN argumentFilter(const PublicArguments* args, const GeometryPayload& payload) noexcept {
+[[gnu::always_inline]] inline RTCFilterFunctionN argumentFilter(const PublicArguments* args,
+                                                                const GeometryPayload& payload) noexcept {
   const RTCIntersectArguments* arguments = queryArguments(args);
   if (arguments == nullptr || arguments->filter == nullptr) return nullptr;
   const bool forAll = (arguments->flags & RTC_RAY_QUERY_FLAG_INVOKE_ARGUMENT_FILTER) != 0;
   return forAll || payload.argumentFilter ? arguments->filter : nullptr;
 }
 
-inline bool intersectFiltered(const RTCIntersectFunctionNArguments* args, const GeometryPayload& payload) noexcept {
+[[gnu::always_inline]] inline bool intersectFiltered(const RTCIntersectFunctionNArguments* args,
+                                                     const GeometryPayload& payload) noexcept {
   return payload.intersectFilter || argumentFilter(args, payload) != nullptr;
 }
-inline bool occlusionFiltered(const RTCOccludedFunctionNArguments* args, const GeometryPayload& payload) noexcept {
+[[gnu::always_inline]] inline bool occlusionFiltered(const RTCOccludedFunctionNArguments* args,
+                                                     const GeometryPayload& payload) noexcept {
   return payload.occlusionFilter || argumentFilter(args, payload) != nullptr;
 }
 
@@ -78,18 +85,18 @@ inline void enableArgumentFilter(RTCGeometry geometry, bool enable) noexcept {
 
 // Offers the candidate in `filter` to the geometry's filter, then, if it is still valid, to the
 // query's argument filter: Embree's own order for built-in geometries (kernels/geometry/filter.h).
-inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
-                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload& payload,
-                                    unsigned lane) noexcept {
+[[gnu::always_inline]] inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
+                                                           const RTCFilterFunctionNArguments* filter,
+                                                           const GeometryPayload& payload, unsigned lane) noexcept {
   if (payload.intersectFilter) {
     rtcInvokeIntersectFilterFromGeometry(args, filter);
     if (filter->valid[lane] == 0) return;
   }
   if (const RTCFilterFunctionN query = argumentFilter(args, payload)) query(filter);
 }
-inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
-                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload& payload,
-                                    unsigned lane) noexcept {
+[[gnu::always_inline]] inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
+                                                           const RTCFilterFunctionNArguments* filter,
+                                                           const GeometryPayload& payload, unsigned lane) noexcept {
   if (payload.occlusionFilter) {
     rtcInvokeOccludedFilterFromGeometry(args, filter);
     if (filter->valid[lane] == 0) return;
@@ -102,22 +109,24 @@ inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
 // Embree 3 has no per-geometry switch: a context filter applies to every geometry.
 inline void enableArgumentFilter(RTCGeometry, bool) noexcept {}
 
-inline bool intersectFiltered(const RTCIntersectFunctionNArguments* args, const GeometryPayload& payload) noexcept {
+[[gnu::always_inline]] inline bool intersectFiltered(const RTCIntersectFunctionNArguments* args,
+                                                     const GeometryPayload& payload) noexcept {
   return payload.intersectFilter || args->context->filter != nullptr;
 }
-inline bool occlusionFiltered(const RTCOccludedFunctionNArguments* args, const GeometryPayload& payload) noexcept {
+[[gnu::always_inline]] inline bool occlusionFiltered(const RTCOccludedFunctionNArguments* args,
+                                                     const GeometryPayload& payload) noexcept {
   return payload.occlusionFilter || args->context->filter != nullptr;
 }
 // Embree 3 calls the geometry's filter, then the context's (passing it the very `args` the callback
 // received: Embree reads a hidden field behind it).
-inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
-                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload&,
-                                    unsigned) noexcept {
+[[gnu::always_inline]] inline void offerToIntersectFilters(const RTCIntersectFunctionNArguments* args,
+                                                           const RTCFilterFunctionNArguments* filter,
+                                                           const GeometryPayload&, unsigned) noexcept {
   rtcFilterIntersection(args, filter);
 }
-inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
-                                    const RTCFilterFunctionNArguments* filter, const GeometryPayload&,
-                                    unsigned) noexcept {
+[[gnu::always_inline]] inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
+                                                           const RTCFilterFunctionNArguments* filter,
+                                                           const GeometryPayload&, unsigned) noexcept {
   rtcFilterOcclusion(args, filter);
 }
 
@@ -125,7 +134,7 @@ inline void offerToOcclusionFilters(const RTCOccludedFunctionNArguments* args,
 
 // The query context's instance stack, recorded in a hit (Embree 4 built with instance arrays also
 // has instPrimID).
-inline void recordInstance(RTCHit& hit, const embree::QueryContext* context) noexcept {
+[[gnu::always_inline]] inline void recordInstance(RTCHit& hit, const embree::QueryContext* context) noexcept {
   for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) {
     hit.instID[level] = context->instID[level];
 #if defined(RTC_GEOMETRY_INSTANCE_ARRAY)
@@ -133,7 +142,8 @@ inline void recordInstance(RTCHit& hit, const embree::QueryContext* context) noe
 #endif
   }
 }
-inline void recordInstance(RTCHitN* hits, unsigned N, unsigned i, const embree::QueryContext* context) noexcept {
+[[gnu::always_inline]] inline void recordInstance(RTCHitN* hits, unsigned N, unsigned i,
+                                                  const embree::QueryContext* context) noexcept {
   for (unsigned level = 0; level < RTC_MAX_INSTANCE_LEVEL_COUNT; ++level) {
     RTCHitN_instID(hits, N, i, level) = context->instID[level];
 #if defined(RTC_GEOMETRY_INSTANCE_ARRAY)
