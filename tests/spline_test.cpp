@@ -77,6 +77,15 @@ TEST(SplineTest, CurvesCrossingTheAxisAreRefused) {
   // An interpolating curve overshooting the axis between points near it.
   expectError(SplineKind::natural, {{1, 0}, {0.001, 0.1}, {1, 0.2}, {0.001, 0.3}, {1, 0.4}}, Rule::crossesAxis, 0,
               "crosses the axis");
+  // The same at r near 1e-230 (found by fuzzing): r(u) = 3 (1 - u)^2 u r1 + 3 (1 - u) u^2 r2 + u^3 r3 with
+  // r1 = -2.8e-230 and r2, r3 below 1e-270 is about 3 u r1 < 0 just after u = 0. The turn of r must still be
+  // found, though the derivative's discriminant (squares near 1e-460) underflows unless scaled.
+  expectError(SplineKind::bezier,
+              {{0.0, -0.5},
+               {-2.834798116031923e-230, 0.1326082449197723},
+               {3.2702877e-317, 4.172015059619754e-309},
+               {1.267508284076368e-279, 3.642300968118686e-217}},
+              Rule::crossesAxis, 0, "crosses the axis");
 }
 
 TEST(SplineTest, CurvesTouchingTheAxisBetweenTheirPointsAreRefused) {

@@ -56,9 +56,19 @@ inline void cubicWithDerivative(const double c[4], double u, double& value, doub
 
 // The parameters in (0, 1) where c' changes sign (at most two, increasing): the simple roots of
 // the quadratic c'(u) / 3 = d0 (1 - u)^2 + 2 d1 u (1 - u) + d2 u^2 in power form, solved without
-// cancellation. A double root (c' touching zero) is no change of sign and is left out.
+// cancellation. A double root (c' touching zero) is no change of sign and is left out. The
+// differences are first scaled by a power of two to a largest magnitude in [0.5, 1): the roots do
+// not depend on the scale, a power of two changes no bit of them, and without it the discriminant's
+// squares of differences near 1e-160 or below underflow to zero and lose the roots (a control
+// polygon of r within 1e-230 of the axis dipped below it unseen).
 inline int derivativeSignChanges(const double c[4], double out[2]) noexcept {
-  const double d0 = c[1] - c[0], d1 = c[2] - c[1], d2 = c[3] - c[2];
+  double d0 = c[1] - c[0], d1 = c[2] - c[1], d2 = c[3] - c[2];
+  const double largest = std::max({std::abs(d0), std::abs(d1), std::abs(d2)});
+  if (largest > 0.0 && largest < HUGE_VAL) {
+    int exponent;
+    std::frexp(largest, &exponent);
+    d0 = std::ldexp(d0, -exponent), d1 = std::ldexp(d1, -exponent), d2 = std::ldexp(d2, -exponent);
+  }
   const double a = d0 - 2.0 * d1 + d2, b = 2.0 * (d1 - d0), k = d0;  // a u^2 + b u + k
   int count = 0;
   const auto keep = [&](double u) {
