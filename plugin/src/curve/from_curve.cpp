@@ -230,14 +230,15 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
   // Profile refuses segments shorter than this (measured on its points' extent, at most the
   // control points' one): consecutive points closer together are one vertex.
   const double shortest = extent * kMinSegmentFraction;
-  // Each round splits one crossing pair; a pair of arcs that do not touch comes apart after as many
-  // halvings as their distance is below their length in binary digits (at most about 60 each, at
-  // 2^-60 of the extent), and a valid profile of the bundled scenes and the benchmark needs a few
-  // dozen rounds. Arcs that touch within rounding (a curve Spline's conservative check let through)
-  // never come apart: after kMaxRounds the pair is refused, clearly, instead of the sweep running
-  // for minutes (found by fuzzing).
-  constexpr int kMaxRounds = 4096;
-  int rounds = 0;
+  // Each round splits one crossing pair and sweeps the whole polyline again; a pair of arcs that
+  // do not touch comes apart after as many halvings as their distance is below their length in
+  // binary digits (at most about 60 each, at 2^-60 of the extent), and the bundled scenes and the
+  // benchmark's curves need a few dozen rounds of a few hundred points. Arcs that touch within
+  // rounding (a curve Spline's conservative check let through) never come apart: once the rounds
+  // have swept 64 times the first polyline's points, or 2^20 if more (a fraction of a second), the
+  // pair is refused, clearly, instead of the sweep running for minutes (found by fuzzing).
+  const std::size_t maxSweptPoints = std::max(std::size_t(1) << 20, 64 * points.size());
+  std::size_t swept = 0, rounds = 0;
   for (;;) {
     std::vector<double> kept{parameters.front()};
     std::vector<Point2> keptPoints{points.front()};
@@ -255,13 +256,15 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
     const std::optional<detail::SegmentPair> pair =
         points.size() >= 2 ? detail::findSelfIntersection(points) : std::nullopt;
     if (!pair) break;
-    if (++rounds > kMaxRounds) {
+    swept += points.size(), ++rounds;
+    if (swept > maxSweptPoints) {
       throw ProfileError(ProfileError::Rule::selfIntersecting, pair->first,
                          "the polyline within " + detail::formatNumber(tolerance) +
-                             " of the curve still has crossing chords after " + std::to_string(kMaxRounds) +
-                             " rounds of splitting them (near polyline points " + std::to_string(pair->first) +
-                             " and " + std::to_string(pair->second) +
-                             "): the curve comes within rounding of itself there");
+                             " of the curve still has crossing chords near polyline points " +
+                             std::to_string(pair->first) + " and " + std::to_string(pair->second) +
+                             " after splitting them " + std::to_string(rounds) +
+                             " times: the curve comes within "
+                             "rounding of itself there");
     }
     std::vector<double> refined;
     refined.reserve(parameters.size() + 8);
