@@ -232,8 +232,8 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
   const double shortest = extent * kMinSegmentFraction;
   // Each round splits one crossing pair and sweeps the whole polyline again; a pair of arcs that
   // do not touch comes apart after as many halvings as their distance is below their length in
-  // binary digits (at most about 60 each, at 2^-60 of the extent), and the bundled scenes and the
-  // benchmark's curves need a few dozen rounds of a few hundred points. Arcs that touch within
+  // binary digits (at most about 60 each, at 2^-60 of the extent); every curve of the tests, the
+  // bundled scenes and the benchmark comes apart well within the bound below. Arcs that touch within
   // rounding (a curve Spline's conservative check let through) never come apart: once the rounds
   // have swept 64 times the first polyline's points, or 2^20 if more (a fraction of a second), the
   // pair is refused, clearly, instead of the sweep running for minutes (found by fuzzing).
