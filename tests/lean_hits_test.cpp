@@ -3,6 +3,7 @@
 // for and the pure query's values bit for bit for what it was; surfaceAttributes, from the traced
 // ray, primID and t, gives back the pure query's whole Hit bit for bit. The pure query itself is
 // checked against independent references elsewhere (reference_agreement_test, spline_tracing_test).
+#include "common/embree_handles.h"
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
@@ -19,14 +20,8 @@
 namespace revolve {
 namespace {
 
-struct DeviceRelease {
-  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-};
-struct SceneRelease {
-  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
-};
-using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceRelease>;
-using ScenePtr = std::unique_ptr<RTCSceneTy, SceneRelease>;
+using DevicePtr = app::Device;  // the applications' owning handles (common/embree_handles.h)
+using ScenePtr = app::Scene;
 
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
