@@ -12,12 +12,15 @@
 // ray, hit or not), and the median over the repetitions of its ratio to "normal+uv" (the default). The
 // configurations are interleaved: each repetition times every one once, so that a slow spell of
 // the shared machine falls on all of them.
+#include "common/command_line.h"
 #include "ray_batches.h"
 #include "ray_sets.h"
 #include "smooth_spline.h"
 #include "test_shapes.h"
 
 #include <revolve/revolve.h>
+#include <CLI/CLI.hpp>
+#include <optional>
 
 #include <algorithm>
 #include <cstdio>
@@ -77,20 +80,23 @@ std::function<std::size_t()> onDemandBatch(RTCScene scene, const Shape& shape, c
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: %s SHAPE POINTS|spline REPETITIONS\n", argv[0]);
-    return 2;
-  }
-  const std::string shapeName = argv[1], resolution = argv[2];
-  const int repetitions = std::atoi(argv[3]);
+  std::string shapeName, resolution;
+  int repetitions = 0;
+  CLI::App cli{"what a hit's attributes cost: each choice of Geometry::Options timed side by side"};
+  cli.add_option("SHAPE", shapeName, "the test shape")
+      ->required()
+      ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
+  cli.add_option("RESOLUTION", resolution, "the polyline's profile points (2 or more), or 'spline' for the exact curve")
+      ->required()
+      ->check(CLI::IsMember({"spline"}) | CLI::Range(2, 1 << 20));
+  cli.add_option("REPETITIONS", repetitions, "timed repetitions (the median is reported)")
+      ->required()
+      ->check(CLI::Range(1, 1000));
+  if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-lean-hits")) return *status;
   const std::vector<SmoothProfile> shapes = testShapes();
   const auto profile =
       std::find_if(shapes.begin(), shapes.end(), [&](const SmoothProfile& s) { return s.name() == shapeName; });
-  const int points = resolution == "spline" ? 0 : std::atoi(resolution.c_str());
-  if (profile == shapes.end() || repetitions < 1 || (resolution != "spline" && points < 2)) {
-    std::fprintf(stderr, "%s: bad arguments (shapes: sphere torus vase goblet bottle)\n", argv[0]);
-    return 2;
-  }
+  const int points = resolution == "spline" ? 0 : std::stoi(resolution);
   // The benchmark's own spline (revolve-bench: within 1e-9 of the size) or polyline.
   const Shape shape = resolution == "spline"
                           ? Shape(Spline(SplineKind::bezier, bezierOf(*profile, 1e-9 * profile->size()).bezier))
