@@ -143,6 +143,33 @@ TEST(SplineTest, CurvesRunningWithinRoundingOfThemselvesAreRefusedQuickly) {
               Rule::selfIntersecting, 0, "run that close for long");
 }
 
+// A hairpin: out from the axis just above z = 0 and back just below it. The halves meet only at
+// the turn, on either side of its z, but 2e-300 apart they run within rounding of each other, and
+// points computed on them cross (found by fuzzing, as a curve 1e-13 long with subnormal z).
+TEST(SplineTest, HairpinsNarrowerThanRoundingAreRefused) {
+  expectError(SplineKind::bezier, {{0, 1e-300}, {1, 1e-300}, {1, -1e-300}, {0, -1e-300}}, Rule::selfIntersecting, 0,
+              "crosses or touches itself");
+  expectError(SplineKind::bezier, {{0, 1e-14}, {1, 1e-14}, {1, -1e-14}, {0, -1e-14}}, Rule::selfIntersecting, 0,
+              "crosses or touches itself");
+  // 2e-6 wide it is a thin disc, far above rounding.
+  EXPECT_NO_THROW(Spline(SplineKind::bezier, std::vector<Point2>{{0, 1e-6}, {1, 1e-6}, {1, -1e-6}, {0, -1e-6}}));
+}
+
+// Found by fuzzing: a join 8.4e-323 from the axis, the first piece arriving from below, the second
+// leaving towards a control point 1.8e-315 away along r and then rising. Since hairpins (above) are
+// no longer passed on their boxes alone, only the cones from the join can part it, and their angles
+// came from cross and dot products that underflowed to 0: the join was taken for a cusp. Directions
+// are now scaled first, and the cones (below, and from r towards z) are apart.
+TEST(SplineTest, ACornerLeavingAlongASubnormalControlOffsetIsValid) {
+  EXPECT_NO_THROW(Spline(SplineKind::bezier, std::vector<Point2>{{0x1p-463, -0x1.197990071ea11p-41},
+                                                                 {0x1.36e89edf33b47p-42, 0x1.50056162dea11p-319},
+                                                                 {0x1.8051e1010100ap-861, -0x1.3003f1e10181p-42},
+                                                                 {0x0.0000000000011p-1022, 0x0p+0},
+                                                                 {0x0.00000162dea11p-1022, 0x0p+0},
+                                                                 {0x1.0000000000005p-47, 0x1.19799812dea11p-41},
+                                                                 {0x0p+0, 0x1.19799812dea11p-41}}));
+}
+
 TEST(SplineTest, NearlyTouchingPartsAndSharpCornersAreValid) {
   // A thin wall: up the outside and down the inside 1e-6 apart, a sharp rim between.
   EXPECT_NO_THROW(Spline(

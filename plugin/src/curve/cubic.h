@@ -14,6 +14,12 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
+// How far cubicAt(c, u) may lie from the exact c(u), as a multiple of max |c_i|: each of de
+// Casteljau's three levels of convex combinations v a + u b rounds two products and their sum (2u
+// relative to max |c_i|) and uses v = 1 - u rounded (u more), so 9u in all; 16u = 2^-49 leaves room
+// for the second-order terms. Two evaluated points closer than twice this cannot be told apart.
+inline constexpr double kCubicAtError = 0x1p-49;
+
 // c(u) for control values c[0..3].
 inline double cubicAt(const double c[4], double u) noexcept {
   const double v = 1.0 - u;

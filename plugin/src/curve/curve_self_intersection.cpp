@@ -1,9 +1,12 @@
 #include "curve/curve_self_intersection.h"
 
+#include "curve/cubic.h"
+
 #include "profile/exact_predicates.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <vector>
 
@@ -14,6 +17,14 @@ Point2 operator-(Point2 a, Point2 b) { return {a.r - b.r, a.z - b.z}; }
 double dot(Point2 a, Point2 b) { return a.r * b.r + a.z * b.z; }
 double cross(Point2 a, Point2 b) { return a.r * b.z - a.z * b.r; }
 double norm(Point2 a) { return std::hypot(a.r, a.z); }
+// a / |a| for a != 0, computed after scaling a by a power of two so that nothing underflows.
+Point2 direction(Point2 a) {
+  int exponent;
+  std::frexp(std::max(std::abs(a.r), std::abs(a.z)), &exponent);
+  const Point2 scaled{std::ldexp(a.r, -exponent), std::ldexp(a.z, -exponent)};
+  const double length = norm(scaled);
+  return {scaled.r / length, scaled.z / length};
+}
 bool same(Point2 a, Point2 b) { return a.r == b.r && a.z == b.z; }
 
 // A piece of a monotone part: its control points, and whether its ends are the part's own.
@@ -31,8 +42,9 @@ Box boxOf(const Sub& s) {  // monotone: the box of the ends
           std::max(s.c[0].z, s.c[3].z)};
 }
 
-bool boxesMeet(const Box& a, const Box& b) {
-  return a.rLow <= b.rHigh && b.rLow <= a.rHigh && a.zLow <= b.zHigh && b.zLow <= a.zHigh;
+// Whether the boxes come within `gap` of each other.
+bool boxesMeet(const Box& a, const Box& b, double gap) {
+  return a.rLow - gap <= b.rHigh && b.rLow - gap <= a.rHigh && a.zLow - gap <= b.zHigh && b.zLow - gap <= a.zHigh;
 }
 
 double diagonal(const Sub& s) { return norm(s.c[3] - s.c[0]); }
@@ -71,7 +83,11 @@ double hullWidth(const Sub& s) {
 class Checker {
  public:
   Checker(double extent, std::size_t parts)
-      : tiny_(0x1p-40 * extent), margin_(0x1p-50 * extent), total_(kPairBudget + 256 * long(parts)) {}
+      : tiny_(0x1p-40 * extent), margin_(2.0 * kCubicAtError * extent), total_(kPairBudget + 256 * long(parts)) {}
+
+  // Parts closer than this may cross once evaluated: each point is computed within kCubicAtError of
+  // the extent, so two parts of the curve count as apart only when more than twice that apart.
+  double margin() const { return margin_; }
 
   // Starts a pair of parts: its budget of subdivisions, within what is left of the curve's.
   void startPair() {
@@ -92,7 +108,7 @@ class Checker {
     }
     if (sharedAB) return apartAtJoin(a, b);
     if (sharedBA) return apartAtJoin(b, a);
-    if (!boxesMeet(boxOf(a), boxOf(b))) return true;
+    if (!boxesMeet(boxOf(a), boxOf(b), margin_)) return true;
     if (segmentDistance(a.c[0], a.c[3], b.c[0], b.c[3]) > hullWidth(a) + hullWidth(b) + margin_) return true;
     const double da = diagonal(a), db = diagonal(b);
     if (da <= tiny_ && db <= tiny_) return false;
@@ -116,32 +132,33 @@ class Checker {
   bool apartAtJoin(const Sub& a, const Sub& b) {
     if (--budget_ < 0) return false;
     const Point2 p = a.c[3];
-    const Box boxA = boxOf(a), boxB = boxOf(b);
-    // The boxes meet in a box holding P; where that box is flat in r (or z), a part that is not
-    // flat in r (z) itself reaches its r (z) only at P (it is monotone), so the parts share only P.
-    const bool flatR = std::max(boxA.rLow, boxB.rLow) == std::min(boxA.rHigh, boxB.rHigh);
-    const bool flatZ = std::max(boxA.zLow, boxB.zLow) == std::min(boxA.zHigh, boxB.zHigh);
-    const bool aSpansR = boxA.rLow < boxA.rHigh, bSpansR = boxB.rLow < boxB.rHigh;
-    const bool aSpansZ = boxA.zLow < boxA.zHigh, bSpansZ = boxB.zLow < boxB.zHigh;
-    if ((flatR && (aSpansR || bSpansR)) || (flatZ && (aSpansZ || bSpansZ))) return true;
+    // Boxes meeting only at P's r (or z) would prove the parts share only P, but not that they stay
+    // apart by more than rounding next to it: a hairpin 1e-300 wide, its halves on either side of
+    // P's z, does not. Only cones tell parts that leave P in different directions apart.
     // Cones from P: each hull lies within the cone about its tangent direction at P whose half-angle
-    // is the widest angle of a control point; cones apart by more than both half-angles (with
-    // room for the angles' rounding) meet only at P.
+    // is the widest angle of a control point, a convex cone while that is below a right angle; two
+    // such cones whose axes are apart by more than both half-angles meet only at P. The margins, 2^-40
+    // radians, cover the angles' rounding: directions are taken as unit vectors (scaled by powers of
+    // two first, so that control points a subnormal distance from P keep their direction instead
+    // of their cross and dot products underflowing to 0).
     const auto cone = [&](const Point2* c, int first, int step, double& halfAngle) -> Point2 {
       Point2 tangent{0.0, 0.0};
       for (int i = first, k = 0; k < 3 && tangent.r == 0.0 && tangent.z == 0.0; i += step, ++k) tangent = c[i] - p;
+      tangent = direction(tangent);
       halfAngle = 0.0;
       for (int i = 0; i < 4; ++i) {
         const Point2 d = c[i] - p;
         if (d.r == 0.0 && d.z == 0.0) continue;
-        halfAngle = std::max(halfAngle, std::atan2(std::abs(cross(tangent, d)), dot(tangent, d)));
+        const Point2 e = direction(d);
+        halfAngle = std::max(halfAngle, std::atan2(std::abs(cross(tangent, e)), dot(tangent, e)));
       }
       return tangent;
     };
     double halfA, halfB;
     const Point2 ta = cone(a.c, 2, -1, halfA), tb = cone(b.c, 1, 1, halfB);
     const double between = std::atan2(std::abs(cross(ta, tb)), dot(ta, tb));
-    if (halfA < 1.5 && halfB < 1.5 && between > halfA + halfB + 0x1p-40) return true;
+    constexpr double kMargin = 0x1p-40, kConvex = 0.5 * std::numbers::pi - kMargin;
+    if (halfA < kConvex && halfB < kConvex && between > halfA + halfB + kMargin) return true;
     const double da = diagonal(a), db = diagonal(b);
     if (da <= tiny_ && db <= tiny_) return false;  // a cusp: the curve turns back on itself at P
     Sub a1, a2, b1, b2;
@@ -173,11 +190,12 @@ std::optional<PartPair> findCurveSelfIntersection(std::span<const MonotonePart> 
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return boxes[a].rLow < boxes[b].rLow; });
   Checker checker(extent, n);
+  const double gap = checker.margin();
   std::vector<std::size_t> active;
   for (const std::size_t i : order) {
-    std::erase_if(active, [&](std::size_t j) { return boxes[j].rHigh < boxes[i].rLow; });
+    std::erase_if(active, [&](std::size_t j) { return boxes[j].rHigh + gap < boxes[i].rLow; });
     for (const std::size_t j : active) {
-      if (!boxesMeet(boxes[i], boxes[j])) continue;
+      if (!boxesMeet(boxes[i], boxes[j], gap)) continue;
       const std::size_t a = std::min(i, j), b = std::max(i, j);
       const bool joinAB = b == a + 1;                    // consecutive: a's end is b's start
       const bool joinBA = loop && a == 0 && b == n - 1;  // the loop's closing join: b's end is a's start

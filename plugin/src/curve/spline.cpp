@@ -7,7 +7,6 @@
 #include "curve/monotone_parts.h"
 #include "curve/spline_pieces.h"
 #include "util/format.h"
-#include "util/rounding.h"
 
 #include <algorithm>
 #include <cmath>
@@ -189,11 +188,11 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     for (int k = 0, count = detail::derivativeSignChanges(r, turns); k < count; ++k) {
       // Between the points it passes through the curve must stay off the axis: r = 0 at a turn of r
       // inside a piece is a touch, which the rule refuses as it refuses a crossing. r(u) is known
-      // within de Casteljau's rounding, 8 u max |r_i| (three levels of convex combinations): a
-      // minimum no farther from the axis than that cannot be told from a touch.
+      // within de Casteljau's rounding (kCubicAtError max |r_i|): a minimum no farther from the
+      // axis than that cannot be told from a touch.
       const double radius = detail::cubicAt(r, turns[k]);
       const double rounding =
-          8.0 * detail::kUnitRoundoff * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
+          detail::kCubicAtError * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
       if (radius <= rounding) {
         throw ProfileError(
             ProfileError::Rule::crossesAxis, pieceStart_[i],
