@@ -183,6 +183,45 @@ TEST(FromCurveTest, ATolerancePastAThinWallIsRefinedIntoAValidPolylineWithinIt) 
   }
 }
 
+// Found by fuzzing: curves whose last control points lie 1e-10 apart, so that the last 1e-5 or so
+// of a piece's parameter range moves the point by a few roundings only (one ends in a hook 1e-21
+// long, past its end point and back). Points computed there carry no order along the curve, and
+// the polyline used to zigzag between them and fold back on itself, which no refinement could
+// undo; points closer than twice their rounding are now one vertex.
+TEST(FromCurveTest, CurvesEndingSlowerThanRoundingGiveValidPolylines) {
+  const Spline hooked(SplineKind::bezier, std::vector<Point2>{{0x1.fe0000000bp+3, 0x1.6000000016p+2},
+                                                              {0x1.6p-34, 0x1.100000005p+0},
+                                                              {0x1.6000000016p+2, 0x1.6000000016p+2},
+                                                              {0x1.6000000001p+2, 0x1.6p+2}});
+  const Spline slowJoin(SplineKind::bezier, std::vector<Point2>{{0x0p+0, 0x1.ep-37},
+                                                                {0x1.ccp-34, 0x1.e0000000e6p-1},
+                                                                {0x1.cc0000001ccp+2, 0x1.cc0000001ccp+2},
+                                                                {0x1.cc0000001ccp+2, 0x1.cbffffffe38p+2},
+                                                                {0x1.17ffffffffep+3, -0x1.fffffffaep-5},
+                                                                {0x1.ep-1, 0x1.000000001p-4},
+                                                                {0x1.7e000000002p+3, 0x0p+0}});
+  for (const double tolerance : {1e-2, 1e-3, 1e-5}) {
+    SCOPED_TRACE("tolerance " + std::to_string(tolerance));
+    expectValidWithin(hooked, tolerance);
+    expectValidWithin(slowJoin, tolerance);
+  }
+}
+
+// A loop smaller than the tolerance (a teardrop 1e-3 across, one Bezier piece from P back to P):
+// it lies within the tolerance of a chord from P to almost P, and the walk used to take that chord
+// and leave one distinct point (found by fuzzing, with a loop 8e-11 across at r = 5.5). It gets a
+// triangle at least.
+TEST(FromCurveTest, ALoopSmallerThanTheToleranceKeepsThreePoints) {
+  for (const double size : {1e-3, 8e-11}) {
+    const Spline loop(SplineKind::bezier, std::vector<Point2>{{1, 1}, {1 + size, 1}, {1, 1 + size}, {1, 1}});
+    for (const double tolerance : {1e-2, 1e-3, 1e-4}) {
+      SCOPED_TRACE("loop " + std::to_string(size) + " across, tolerance " + std::to_string(tolerance));
+      expectValidWithin(loop, tolerance);
+      EXPECT_GE(Profile::fromCurve(loop, tolerance).points().size(), 4u);  // a closed triangle at least
+    }
+  }
+}
+
 // Every test curve at tolerances from a tenth of its size down: never an error.
 TEST(FromCurveTest, EveryCurveAtEveryToleranceGivesAValidPolyline) {
   for (const testing::NamedSpline& named : testing::closedSplines()) {

@@ -141,6 +141,9 @@ class CurveWalk {
   std::size_t pieces_;
 };
 
+// Samples a piece taken when looking for three far-apart points of a loop.
+constexpr int kLoopSamples = 16;
+
 }  // namespace
 
 Profile Profile::fromCurve(const Spline& curve, double tolerance) {
@@ -158,6 +161,13 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
                                 " is below 2^-40 of the curve's extent " + detail::formatNumber(extent) +
                                 ", finer than double-precision chords resolve");
   }
+  // Each point is evaluated within kCubicAtError of the extent, so two closer than twice that are
+  // one vertex: their order along the curve is lost in rounding, and keeping both can fold the
+  // polyline back on itself where the curve moves slowly (next to a repeated control point). Such
+  // a merge moves a chord by at most that distance, so chords are measured against what is left of
+  // the tolerance (at least 2^-40 of the extent, hence 255/256 of it or more).
+  const double indistinct = 2.0 * detail::kCubicAtError * extent;
+  const double chordTolerance = tolerance - indistinct;
   const CurveWalk walk(curve);
   const double last = double(walk.pieces());
   // Chords may span smooth joins but not corners, which stay vertices (a rim stays sharp).
@@ -166,13 +176,40 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
     if (walk.cornerAt(k)) corners.push_back(double(k));
   }
   corners.push_back(last);
+  // A loop (its ends one point) no larger than the tolerance lies within it of a chord from its
+  // start to almost its start: two points, no profile. Three of its points far apart stay vertices
+  // instead: of samples along it, the farthest from the start, and the farthest from the line
+  // through those two. Any three points not on one line make a valid triangle to refine from; a
+  // loop within rounding of a line or a point is refused by Spline.
+  const Point2 start = walk.at(0.0), finish = walk.at(last);
+  if (start.r == finish.r && start.z == finish.z) {
+    const auto sampleBest = [&](auto&& score) {
+      double bestT = 0.0, best = 0.0;
+      for (std::size_t k = 0; k < walk.pieces(); ++k) {
+        for (int i = 1; i < kLoopSamples; ++i) {
+          const double T = double(k) + double(i) / kLoopSamples;
+          if (const double value = score(walk.at(T)); value > best) best = value, bestT = T;
+        }
+      }
+      return bestT;
+    };
+    const double far = sampleBest([&](Point2 q) { return std::hypot(q.r - start.r, q.z - start.z); });
+    const Point2 f = walk.at(far);
+    const double wide = sampleBest(
+        [&](Point2 q) { return std::abs((f.r - start.r) * (q.z - start.z) - (f.z - start.z) * (q.r - start.r)); });
+    for (const double T : {far, wide}) {
+      if (T > 0.0) corners.push_back(T);
+    }
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  }
   std::vector<double> parameters{0.0};  // each point's place on the curve, T = piece + u
   double T = 0.0;
   std::size_t nextCorner = 0;
   while (T < last) {
     while (corners[nextCorner] <= T) ++nextCorner;
     const double end = corners[nextCorner];
-    if (walk.chordError(T, end) <= tolerance) {
+    if (walk.chordError(T, end) <= chordTolerance) {
       T = end;
     } else {
       // Gallop over whole pieces, then bisect for the farthest reach the tolerance allows. A chord
@@ -181,7 +218,7 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
       for (double step = 1.0;; step *= 2.0) {
         const double next = std::floor(T) + step;
         if (next >= end) break;
-        if (walk.chordError(T, next) <= tolerance) {
+        if (walk.chordError(T, next) <= chordTolerance) {
           good = next;
         } else {
           bad = next;
@@ -190,7 +227,7 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
       }
       while (bad - good > 0x1p-44 * std::max(1.0, bad)) {
         const double middle = 0.5 * (good + bad);
-        (walk.chordError(T, middle) <= tolerance ? good : bad) = middle;
+        (walk.chordError(T, middle) <= chordTolerance ? good : bad) = middle;
       }
       if (good == T) {
         // Even the shortest chord tried fails (a tolerance below the curve's rounding): step on.
@@ -223,27 +260,26 @@ Profile Profile::fromCurve(const Spline& curve, double tolerance) {
   const auto refine = [&](auto&& self, double from, double to, std::vector<double>& out) -> void {
     const double middle = 0.5 * (from + to);
     if (!(middle > from && middle < to)) return;  // a parameter range at its resolution
-    if (walk.chordError(from, middle) > tolerance) self(self, from, middle, out);
+    if (walk.chordError(from, middle) > chordTolerance) self(self, from, middle, out);
     out.push_back(middle);
-    if (walk.chordError(middle, to) > tolerance) self(self, middle, to, out);
+    if (walk.chordError(middle, to) > chordTolerance) self(self, middle, to, out);
   };
-  // Profile refuses segments shorter than this (measured on its points' extent, at most the
-  // control points' one): consecutive points closer together are one vertex.
-  const double shortest = extent * kMinSegmentFraction;
   // Each round splits one crossing pair and sweeps the whole polyline again; a pair of arcs that
   // do not touch comes apart after as many halvings as their distance is below their length in
-  // binary digits (at most about 60 each, at 2^-60 of the extent); every curve of the tests, the
-  // bundled scenes and the benchmark comes apart well within the bound below. Arcs that touch within
-  // rounding (a curve Spline's conservative check let through) never come apart: once the rounds
-  // have swept 64 times the first polyline's points, or 2^20 if more (a fraction of a second), the
-  // pair is refused, clearly, instead of the sweep running for minutes (found by fuzzing).
+  // binary digits. Spline accepts only curves whose parts stay more than twice a point's rounding
+  // apart (away from the joins, where their cones part them), so the arcs here come apart within
+  // about 48 halvings. The bound below is a guard should that reasoning have a hole (fuzzing found
+  // such holes twice, now closed): once the rounds have swept 64 times the first polyline's points,
+  // or 2^20 if more (a fraction of a second), the pair is refused with a clear message instead of
+  // the sweep running for minutes.
   const std::size_t maxSweptPoints = std::max(std::size_t(1) << 20, 64 * points.size());
   std::size_t swept = 0, rounds = 0;
   for (;;) {
     std::vector<double> kept{parameters.front()};
     std::vector<Point2> keptPoints{points.front()};
     for (std::size_t i = 1; i < points.size(); ++i) {
-      if (!(std::hypot(points[i].r - keptPoints.back().r, points[i].z - keptPoints.back().z) < shortest)) {
+      // (Profile refuses segments shorter than 2^-60 of its extent, far below `indistinct`.)
+      if (!(std::hypot(points[i].r - keptPoints.back().r, points[i].z - keptPoints.back().z) < indistinct)) {
         kept.push_back(parameters[i]);
         keptPoints.push_back(points[i]);
       } else if (i + 1 == points.size() && keptPoints.size() > 1) {
