@@ -49,26 +49,49 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-failed=()
-for target in fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json fuzz_poses_csv; do
-  corpus="$scratch/$target"
-  mkdir -p "$corpus"
+# One target: a scratch copy of its corpus, its time, its own log; the verdict in $scratch/<target>.ok.
+fuzz_target() {
+  local target=$1
+  local corpus="$scratch/$target" artifacts="$build/fuzz-artifacts/$target"
+  mkdir -p "$corpus" "$artifacts"
   cp "$here/corpus/$target/"* "$corpus/"
-  artifacts="$build/fuzz-artifacts/$target"
-  mkdir -p "$artifacts"
-  dictionary=()
+  local dictionary=()
   [[ -f "$here/$target.dict" ]] && dictionary=(-dict="$here/$target.dict")
-  target_seconds=$(( seconds / ${time_share[$target]:-1} ))
+  local target_seconds=$(( seconds / ${time_share[$target]:-1} ))
   (( target_seconds >= 1 )) || target_seconds=1
-  echo "== $target: ${target_seconds}s, max_len ${max_len[$target]}"
-  if ! "$build/bin/$target" "$corpus" "${dictionary[@]}" \
+  if "$build/bin/$target" "$corpus" "${dictionary[@]}" \
       -max_total_time="$target_seconds" -max_len="${max_len[$target]}" -timeout=10 -rss_limit_mb=2048 \
       -artifact_prefix="$artifacts/" -print_final_stats=1 2> "$artifacts/log.txt"; then
-    failed+=("$target")
-    echo "!! $target failed; last lines of $artifacts/log.txt:"
-    tail -n 40 "$artifacts/log.txt"
+    touch "$scratch/$target.ok"
+  fi
+}
+
+# Each libFuzzer process uses one core: as many targets at a time as there are cores, so that the
+# stage takes the time of one target per core rather than the sum (each still gets its full time).
+targets=(fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json fuzz_poses_csv)
+parallel=$(nproc)
+running=0
+for target in "${targets[@]}"; do
+  if (( running >= parallel )); then
+    wait -n || true  # a target's verdict is its .ok file
+    running=$((running - 1))
+  fi
+  echo "== $target: $(( seconds / ${time_share[$target]:-1} ))s, max_len ${max_len[$target]}"
+  fuzz_target "$target" &
+  running=$((running + 1))
+done
+wait
+
+failed=()
+for target in "${targets[@]}"; do
+  log="$build/fuzz-artifacts/$target/log.txt"
+  echo "== $target"
+  if [[ -f "$scratch/$target.ok" ]]; then
+    grep -E "DONE +cov:|^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)" "$log" || true
   else
-    grep -E "DONE +cov:|^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb)" "$artifacts/log.txt" || true
+    failed+=("$target")
+    echo "!! $target failed; last lines of $log:"
+    tail -n 40 "$log"
   fi
 done
 
