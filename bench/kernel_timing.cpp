@@ -15,9 +15,11 @@
 
 #include <revolve/revolve.h>  // Embree 3 or 4, whichever the revision was built with
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <memory>
 #include <string>
@@ -34,33 +36,46 @@ double threadSeconds() {
   return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
-std::vector<int> parsePoints(const std::string& text) {
-  std::vector<int> points;
-  std::size_t at = 0;
-  while (at < text.size()) {
-    std::size_t end = text.find(',', at);
-    if (end == std::string::npos) end = text.size();
-    points.push_back(std::stoi(text.substr(at, end - at)));
-    at = end + 1;
-  }
-  return points;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::fprintf(stderr, "usage: %s SHAPE POINTS,POINTS,... incoherent|camera8 REPETITIONS\n", argv[0]);
-    return 2;
+  // CLI11 only (header-only, no helper of this checkout's): the program is also compiled against
+  // older revisions' libraries.
+  std::string shapeName, mode;
+  std::vector<int> points;
+  int repetitions = 0;
+  CLI::App cli{"MIBIT's cost a ray at given profile resolutions, against the one-quadratic primitive"};
+  cli.add_option("SHAPE", shapeName, "the test shape")
+      ->required()
+      ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
+  std::string pointList;
+  cli.add_option("POINTS", pointList, "profile resolutions, comma-separated (2 to 2^20 points each)")->required();
+  cli.add_option("MODE", mode, "the rays")->required()->check(CLI::IsMember({"incoherent", "camera8"}));
+  cli.add_option("REPETITIONS", repetitions, "timed repetitions (the median is reported)")
+      ->required()
+      ->check(CLI::Range(1, 1000));
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return cli.exit(error) == 0 ? 0 : 2;  // --help is no error; a bad argument exits 2, as the other tools do
   }
-  const std::string shapeName = argv[1], mode = argv[3];
-  const std::vector<int> points = parsePoints(argv[2]);
-  const int repetitions = std::atoi(argv[4]);
+  for (std::size_t at = 0; at <= pointList.size();) {
+    const std::size_t end = std::min(pointList.find(',', at), pointList.size());
+    int count = 0;
+    const auto [stop, error] = std::from_chars(pointList.data() + at, pointList.data() + end, count);
+    if (error != std::errc{} || stop != pointList.data() + end || count < 2 || count > (1 << 20)) {
+      std::fprintf(stderr, "POINTS: '%s' in '%s' must be a whole number of points from 2 to 2^20\n",
+                   pointList.substr(at, end - at).c_str(), pointList.c_str());
+      return 2;
+    }
+    points.push_back(count);
+    at = end + 1;
+  }
   const std::vector<SmoothProfile> shapes = testShapes();
   const auto shape =
       std::find_if(shapes.begin(), shapes.end(), [&](const SmoothProfile& s) { return s.name() == shapeName; });
-  if (shape == shapes.end() || points.empty() || repetitions < 1 || (mode != "incoherent" && mode != "camera8")) {
-    std::fprintf(stderr, "%s: bad arguments (shapes: sphere torus vase goblet bottle)\n", argv[0]);
+  if (shape == shapes.end()) {
+    std::fprintf(stderr, "%s: no test shape '%s' in this revision\n", argv[0], shapeName.c_str());
     return 2;
   }
 
