@@ -24,6 +24,8 @@
 #include "util/azimuth.h"
 #include "util/simd.h"
 
+#include "common/embree_handles.h"
+
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>
@@ -371,12 +373,8 @@ void expectOccluded(const Case& c, const std::string& path, bool occluded) {
 // ---------------------------------------------------------------------------------------------
 // Embree.
 
-struct DeviceRelease {
-  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-};
-struct SceneRelease {
-  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
-};
+using app::DeviceRelease;  // the applications' owning handles (common/embree_handles.h)
+using app::SceneRelease;
 
 struct EmbreeScene {
   std::unique_ptr<RTCDeviceTy, DeviceRelease> device{rtcNewDevice(nullptr)};

@@ -5,6 +5,8 @@
 #include "support/reference.h"
 #include "support/test_scale.h"
 
+#include "common/embree_handles.h"
+
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>
@@ -19,12 +21,8 @@
 namespace revolve {
 namespace {
 
-struct DeviceRelease {
-  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-};
-struct SceneRelease {
-  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
-};
+using app::DeviceRelease;  // the applications' owning handles (common/embree_handles.h)
+using app::SceneRelease;
 
 std::string limitationOf(std::vector<Point2> points) { return coneCurveLimitation(Profile(points)).value_or(""); }
 

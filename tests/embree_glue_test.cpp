@@ -6,6 +6,8 @@
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
+#include "common/embree_handles.h"
+
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>
@@ -19,12 +21,8 @@
 namespace revolve {
 namespace {
 
-struct DeviceRelease {
-  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-};
-struct SceneRelease {
-  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
-};
+using app::DeviceRelease;  // the applications' owning handles (common/embree_handles.h)
+using app::SceneRelease;
 using DevicePtr = std::unique_ptr<RTCDeviceTy, DeviceRelease>;
 using ScenePtr = std::unique_ptr<RTCSceneTy, SceneRelease>;
 

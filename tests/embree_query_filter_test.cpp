@@ -3,6 +3,8 @@
 // rtcIntersect4/8/16 and rtcOccluded1/4/8/16. The scene: a capped cylinder (radius 1, height 2) at
 // the origin behind a triangle quad in the plane x = -2, rays from x = -5 along +x; the answers are closed
 // forms. Also: Geometry moves as an owning handle does.
+#include "common/embree_handles.h"
+
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>
@@ -17,12 +19,8 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-struct DeviceRelease {
-  void operator()(RTCDevice device) const { rtcReleaseDevice(device); }
-};
-struct SceneRelease {
-  void operator()(RTCScene scene) const { rtcReleaseScene(scene); }
-};
+using app::DeviceRelease;  // the applications' owning handles (common/embree_handles.h)
+using app::SceneRelease;
 
 // Rejects every candidate nearer than t = 5 (the ray's tfar holds the candidate's distance), on
 // whatever geometry; counts its calls by geometry.
