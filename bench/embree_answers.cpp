@@ -16,9 +16,9 @@
 #include "test_shapes.h"
 #include "traced_scene.h"
 
-#include "common/command_line.h"
-#include "common/embree_handles.h"
-#include "common/embree_rays.h"
+#include "cli/command_line.h"
+#include "embree/embree_handles.h"
+#include "embree/embree_rays.h"
 #include "io/output_set.h"
 
 #include <CLI/CLI.hpp>

@@ -2,7 +2,7 @@
 
 #include "ray_batches.h"
 
-#include "common/embree_rays.h"
+#include "embree/embree_rays.h"
 
 #include <tbb/parallel_for.h>
 

@@ -2,7 +2,7 @@
 
 #include "io/output_set.h"
 
-#include "image_output.h"
+#include "render/image_output.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>

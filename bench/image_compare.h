@@ -1,7 +1,7 @@
 // Two renderings of one scene compared after matching exposure, and shown side by side.
 #pragma once
 
-#include "renderer.h"
+#include "render/renderer.h"
 
 #include <string>
 

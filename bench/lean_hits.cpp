@@ -12,7 +12,7 @@
 // ray, hit or not), and the median over the repetitions of its ratio to "normal+uv" (the default). The
 // configurations are interleaved: each repetition times every one once, so that a slow spell of
 // the shared machine falls on all of them.
-#include "common/command_line.h"
+#include "cli/command_line.h"
 #include "ray_batches.h"
 #include "ray_sets.h"
 #include "smooth_spline.h"

@@ -1,7 +1,7 @@
 #include "paper_table.h"
 
 #include "io/scene_file.h"
-#include "renderer.h"
+#include "render/renderer.h"
 #include "scene/embree_scene.h"
 
 #include <algorithm>

@@ -2,11 +2,11 @@
 
 #include "io/output_set.h"
 
-#include "image_output.h"
+#include "render/image_output.h"
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "povray.h"
-#include "renderer.h"
+#include "render/renderer.h"
 #include "scene/embree_scene.h"
 #include "smooth_spline.h"
 #include "test_shapes.h"

@@ -4,7 +4,7 @@
 // parsing) is what is compared.
 #pragma once
 
-#include "renderer.h"
+#include "render/renderer.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,6 @@
 #include "ray_batches.h"
 
-#include "common/embree_rays.h"
+#include "embree/embree_rays.h"
 
 #include <tbb/parallel_for.h>
 

@@ -20,9 +20,9 @@
 #include "run_info.h"
 #include "suites.h"
 
-#include "../demo/common/command_line.h"
-#include "../demo/common/embree_handles.h"
-#include "../demo/common/memory_check.h"
+#include "cli/command_line.h"
+#include "embree/embree_handles.h"
+#include "embree/memory_check.h"
 
 #include <CLI/CLI.hpp>
 

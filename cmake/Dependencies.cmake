@@ -28,13 +28,13 @@ if(REVOLVE_EMBREE_MAJOR STREQUAL "3" AND embree_VERSION VERSION_LESS 3.13)
 endif()
 message(STATUS "revolve: Embree ${embree_VERSION} (${embree_DIR})")
 
-if(REVOLVE_BUILD_DEMOS OR REVOLVE_BUILD_TESTS OR REVOLVE_BUILD_BENCH OR REVOLVE_FUZZ)
+if(REVOLVE_BUILD_TOOLS OR REVOLVE_BUILD_TESTS OR REVOLVE_BUILD_BENCH OR REVOLVE_FUZZ)
   find_package(CLI11 REQUIRED)
   find_package(TBB REQUIRED)
 endif()
 
-if(REVOLVE_BUILD_DEMOS)
-  find_package(nlohmann_json 3 REQUIRED)   # the scene format (demo/io)
+if(REVOLVE_BUILD_TOOLS)
+  find_package(nlohmann_json 3 REQUIRED)   # the scene format (platform/io)
   find_package(OpenImageIO REQUIRED)       # revolve-render's images
   # Debian's OpenImageIO 2.4 target names /usr/include/opencv4 as an include directory, which
   # exists only with libopencv-dev; nothing here uses OpenCV, so drop the entry.
@@ -63,11 +63,11 @@ set(REVOLVE_PYTHON_ENABLED OFF)
 if(NOT REVOLVE_BUILD_PYTHON MATCHES "^(AUTO|ON|OFF)$")
   message(FATAL_ERROR "REVOLVE_BUILD_PYTHON is '${REVOLVE_BUILD_PYTHON}': it must be AUTO, ON or OFF")
 endif()
-if(REVOLVE_BUILD_PYTHON STREQUAL "ON" OR (REVOLVE_BUILD_PYTHON STREQUAL "AUTO" AND REVOLVE_BUILD_DEMOS AND NOT REVOLVE_SANITIZE
+if(REVOLVE_BUILD_PYTHON STREQUAL "ON" OR (REVOLVE_BUILD_PYTHON STREQUAL "AUTO" AND REVOLVE_BUILD_TOOLS AND NOT REVOLVE_SANITIZE
                                              AND NOT REVOLVE_FUZZ))
   set(missing "")
-  if(NOT REVOLVE_BUILD_DEMOS)
-    set(missing "the applications' libraries (REVOLVE_BUILD_DEMOS=ON)")
+  if(NOT REVOLVE_BUILD_TOOLS)
+    set(missing "the applications' libraries (REVOLVE_BUILD_TOOLS=ON)")
   else()
     if(NOT Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
       set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python interpreter the package is built for")

@@ -37,14 +37,20 @@ cmake --build "$work/old-build" --target revolve revolve_io revolve_bench_lib >/
 # Revisions since the Embree 4 port split the library in two and generate revolve/config.h.
 old_libraries=("$work/old-build/plugin/librevolve.a")
 [[ -f "$work/old-build/plugin/librevolve_core.a" ]] && old_libraries+=("$work/old-build/plugin/librevolve_core.a")
+# Revisions since the platform/ layout keep its geometry (placements) in a library of its own.
+[[ -f "$work/old-build/platform/librevolve_geometry.a" ]] &&
+  old_libraries=("$work/old-build/platform/librevolve_geometry.a" "${old_libraries[@]}")
 embree_major=$(grep -o 'REVOLVE_EMBREE_MAJOR [0-9]' "$work/old-build/plugin/include/revolve/config.h" 2>/dev/null | cut -d' ' -f2)
 # This checkout's timing program against the old libraries and headers (copied beside them, since a
 # quoted include looks in the source's own folder first): it uses only what every revision's
 # benchmark library has.
 cp bench/kernel_timing.cpp "$work/old/bench/kernel_timing.cpp"
-g++ -O2 -std=c++20 -I "$work/old/bench" -I "$work/old/demo" -I "$work/old/plugin/include" \
+# The applications' shared code lay in demo/ before it became platform/.
+platform=platform
+[[ -d "$work/old/platform" ]] || platform=demo
+g++ -O2 -std=c++20 -I "$work/old/bench" -I "$work/old/$platform" -I "$work/old/plugin/include" \
   -I "$work/old-build/plugin/include" "$work/old/bench/kernel_timing.cpp" \
-  -o "$work/old-timing" "$work/old-build/bench/librevolve_bench_lib.a" "$work/old-build/demo/librevolve_io.a" \
+  -o "$work/old-timing" "$work/old-build/bench/librevolve_bench_lib.a" "$work/old-build/$platform/librevolve_io.a" \
   "${old_libraries[@]}" "-lembree${embree_major:-3}" -ltbb -lbenchmark -lpthread
 echo "== building this checkout"
 scripts/build.sh --target revolve-kernel-timing >/dev/null

@@ -18,7 +18,7 @@ esac
 scripts/install-deps.sh --test
 targets=(--target revolve-render --target revolve-lidar)
 [[ $benchmarks == yes ]] && targets+=(--target revolve-bench --target revolve-lidar-bench)
-scripts/build.sh "${targets[@]}" -- -DREVOLVE_BUILD_DEMOS=ON -DREVOLVE_BUILD_BENCH=ON
+scripts/build.sh "${targets[@]}" -- -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_BENCH=ON
 mkdir -p out
 
 if [[ $benchmarks == yes ]]; then

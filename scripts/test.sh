@@ -18,7 +18,7 @@ scripts/check-format.sh
 echo "== Release build and tests (the Python package's pytest suite among them)"
 # Tests and benchmark on explicitly: build/ may have been configured by scripts/main.sh without them.
 # The Python package too, so that a missing dependency fails here instead of skipping its tests.
-scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_DEMOS=ON -DREVOLVE_BUILD_PYTHON=ON
+scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_PYTHON=ON
 ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 echo "== Release build and tests: ${SECONDS} s so far"
 

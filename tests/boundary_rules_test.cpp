@@ -24,7 +24,7 @@
 #include "util/azimuth.h"
 #include "util/simd.h"
 
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 
 #include <revolve/revolve.h>
 

@@ -5,7 +5,7 @@
 #include "support/reference.h"
 #include "support/test_scale.h"
 
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 
 #include <revolve/revolve.h>
 

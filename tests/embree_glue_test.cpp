@@ -6,7 +6,7 @@
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 
 #include <revolve/revolve.h>
 

@@ -3,7 +3,7 @@
 // rtcIntersect4/8/16 and rtcOccluded1/4/8/16. The scene: a capped cylinder (radius 1, height 2) at
 // the origin behind a triangle quad in the plane x = -2, rays from x = -5 along +x; the answers are closed
 // forms. Also: Geometry moves as an owning handle does.
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 
 #include <revolve/revolve.h>
 

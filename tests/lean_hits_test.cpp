@@ -3,7 +3,7 @@
 // for and the pure query's values bit for bit for what it was; surfaceAttributes, from the traced
 // ray, primID and t, gives back the pure query's whole Hit bit for bit. The pure query itself is
 // checked against independent references elsewhere (reference_agreement_test, spline_tracing_test).
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 

@@ -94,7 +94,7 @@ done
 rm -f "$work/check"
 
 cmake -S "$copy" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON \
-  -DREVOLVE_BUILD_DEMOS=ON >"$work/configure.log" 2>&1 || fail "configuring failed: see $work/configure.log"
+  -DREVOLVE_BUILD_TOOLS=ON >"$work/configure.log" 2>&1 || fail "configuring failed: see $work/configure.log"
 
 echo "== unplanted: every test must pass"
 failed=$(build_and_test "$work/unplanted.log")

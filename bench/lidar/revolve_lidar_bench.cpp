@@ -17,7 +17,7 @@
 //     mesh, each configuration timed --repeats
 //     times (whole passes over the poses for at least 0.25 s each), the configurations interleaved
 //     within each repeat; the median is reported.
-#include "common/command_line.h"
+#include "cli/command_line.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scene_file.h"

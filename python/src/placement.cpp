@@ -1,6 +1,6 @@
 #include "placement.h"
 
-#include "common/ray_limits.h"
+#include "geometry/ray_limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +108,7 @@ Placement placementOf(const double* rows, const Shape& shape) {
     placement.translate[r] = rows[4 * r + 3];
   }
   placement.inverse = inverseOf(placement.linear);
-  // The test the scene builder applies to a scene file's transforms (demo/scene/embree_scene.cpp):
+  // The test the scene builder applies to a scene file's transforms (platform/scene/embree_scene.cpp):
   // Embree's object-space rays stay within its range, from any ray origin revolve accepts.
   const double norm = infinityNorm(placement.linear), inverseNorm = infinityNorm(placement.inverse);
   if (!(inverseNorm * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||

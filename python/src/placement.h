@@ -1,5 +1,5 @@
 // Where RaycastingScene.add_revolution puts a shape: an affine 4x4 matrix (object to world), checked
-// against the ranges the tools trace within (demo/common/ray_limits.h), with what the queries need
+// against the ranges the tools trace within (platform/geometry/ray_limits.h), with what the queries need
 // of it: Embree's float matrix, the double-precision maps both ways, the normals' map, and whether
 // it is a similarity (distances are exact only under rotation, uniform scale and translation).
 #pragma once

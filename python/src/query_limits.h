@@ -1,9 +1,9 @@
 // The rays and query points RaycastingScene accepts, checked one by one before any reaches Embree
-// (Embree's own checks abort the process): the ranges of demo/common/ray_limits.h, within which
+// (Embree's own checks abort the process): the ranges of platform/geometry/ray_limits.h, within which
 // a ray stays inside Embree's contract in the world and inside every placed shape.
 #pragma once
 
-#include "common/ray_limits.h"
+#include "geometry/ray_limits.h"
 
 #include <cmath>
 #include <string>

@@ -8,7 +8,7 @@
 
 #include "io/scene_file.h"
 #include "scene/degenerate_objects.h"
-#include "scene/transform.h"
+#include "geometry/transform.h"
 
 #include <pybind11/stl.h>
 

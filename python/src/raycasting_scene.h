@@ -10,7 +10,7 @@
 
 #include "placement.h"
 
-#include "common/embree_handles.h"
+#include "embree/embree_handles.h"
 
 #include <revolve/revolve.h>
 

@@ -1,11 +1,11 @@
 // The robot tools' code for Python: a scene file built as the tools build it (Scene), the laser
 // range-finder of revolve-lidar (Lidar) and its scan files (ScanFile), and revolve-clearance's
-// cylinder clearance. The same library code the tools run (demo/robot, demo/io, demo/scene), so
+// cylinder clearance. The same library code the tools run (platform/robot, platform/io, platform/scene), so
 // that the answers are theirs bit for bit.
 #include "bindings.h"
 #include "numpy_inputs.h"
 
-#include "common/ray_limits.h"
+#include "geometry/ray_limits.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scan_files.h"

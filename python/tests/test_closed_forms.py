@@ -138,7 +138,7 @@ def test_placed_cylinder_is_hit_where_the_placement_puts_it():
     normal /= np.linalg.norm(normal, axis=1)[:, None]
     cos = cosine(rays, normal)
     # Embree maps the ray into the object in float: within gamma(4) |L| |L^-1| (|o| + |T| + |t d|) of
-    # the world ray's point (demo/scene/embree_scene.h), divided by |d| cos along the ray.
+    # the world ray's point (platform/scene/embree_scene.h), divided by |d| cos along the ray.
     reach = np.abs(o).max(axis=1) + np.abs(matrix[:3, 3]).max() + np.abs(expected[:, None] * d).max(axis=1)
     condition = np.abs(matrix[:3, :3]).sum(axis=1).max() * np.abs(inverse).sum(axis=1).max()
     bound = 4 * 2.0**-24 * condition * reach / (np.linalg.norm(d, axis=1) * np.maximum(cos, 1e-6))

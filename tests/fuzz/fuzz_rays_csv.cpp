@@ -4,9 +4,9 @@
 // and direction within +-2^60; the rays, written back as shortest round-trip text, read back bit
 // for bit; and every ray traced through Embree as revolve-trace traces it (rtcIntersect1 on a scene
 // holding a revolve Geometry), where Embree aborts the process on a ray beyond its contract.
-#include "common/embree_handles.h"
-#include "common/embree_rays.h"
-#include "common/ray_limits.h"
+#include "embree/embree_handles.h"
+#include "embree/embree_rays.h"
+#include "geometry/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/text_files.h"
 

@@ -7,13 +7,13 @@
 // beyond its range (also inside an instance), and the scene must have refused none. Anything else,
 // or a sanitizer report, is a finding. Profile CSVs resolve against a folder that does not exist,
 // so a "csv" entry must end in a clean SceneError too.
-#include "common/ray_limits.h"
-#include "common/vector_math.h"
+#include "geometry/ray_limits.h"
+#include "geometry/vector_math.h"
 #include "fuzz_checks.h"
 #include "io/scene_file.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
-#include "scene/transform.h"
+#include "geometry/transform.h"
 
 #include <cmath>
 #include <cstddef>

@@ -5,7 +5,7 @@
 // most a turn, range 0 <= min < max, resolution and stddev >= 0), whose beam angles (fanAngles)
 // run from min_angle to max_angle without going back. Anything else, or a sanitizer report, is a
 // finding.
-#include "common/ray_limits.h"
+#include "geometry/ray_limits.h"
 #include "fuzz_checks.h"
 #include "io/sensor_file.h"
 

@@ -20,7 +20,7 @@ build=$(realpath -m "${2:-$root/build-fuzz}")
 
 cmake -S "$root" -B "$build" -G Ninja \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_DEMOS=ON
+  -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_TOOLS=ON
 cmake --build "$build" --target fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json \
   fuzz_poses_csv
 # Regressions first: every seed and every saved finding, once each.

@@ -1,4 +1,4 @@
-// The CSV readers and writers of demo/io: every rule of text_files.h has a test, and every error
+// The CSV readers and writers of platform/io: every rule of text_files.h has a test, and every error
 // message is checked for what the rule says it must name: the file, the line, the field and the
 // offending text. Expected numbers are reasoned from the decimal text and IEEE rounding, not taken
 // from the code under test.

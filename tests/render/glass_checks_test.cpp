@@ -1,7 +1,7 @@
 // Glass objects whose profile is open or runs the wrong way are named in a warning, once per
 // object; closed profiles listed from the axis at the bottom up the outside, and other materials,
 // are not.
-#include "glass_checks.h"
+#include "render/glass_checks.h"
 #include "io/scene_file.h"
 
 #include <gmock/gmock.h>

@@ -4,7 +4,7 @@
 // mirrored, objects where they are, light in the same units). Runs only where povray is installed.
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
-#include "renderer.h"
+#include "render/renderer.h"
 #include "scene/embree_scene.h"
 
 #include "../io/scratch_directory.h"

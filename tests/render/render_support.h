@@ -1,9 +1,9 @@
 // Rendering a scene given as JSON text, in process, for the renderer's tests.
 #pragma once
 
-#include "image_output.h"
+#include "render/image_output.h"
 #include "io/scene_file.h"
-#include "renderer.h"
+#include "render/renderer.h"
 #include "scene/embree_scene.h"
 
 #include <cmath>

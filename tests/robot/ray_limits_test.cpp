@@ -3,7 +3,7 @@
 // EmbreeScene refuses a description made in code whose transform would carry rays beyond it, and
 // counts and misses a ray beyond it rather than let Embree abort the process. And the warnings for
 // objects that show nothing: one per object, for exactly the cases they name.
-#include "common/ray_limits.h"
+#include "geometry/ray_limits.h"
 #include "robot_scenes.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"

@@ -1,0 +1,127 @@
+// The scene file: JSON describing a camera, profiles, materials, objects of revolution, quads,
+// lights and an environment (README.md, "Scene format"). An interface other tools write and read
+// (revolve-render now; the lidar and clearance tools later), so the reader returns a plain
+// description with everything validated and every name resolved to an index; building Embree
+// objects from it is platform/scene's job.
+//
+// The reader is strict: a missing or unknown key, a wrong type, an unknown name, a bad profile or
+// an unreadable profile CSV is a SceneError naming the file, the key path
+// (`objects[12].profile: no profile named "botle"`), the value and the rule, on one line. Positions
+// (and every placed object's reach) lie within the coordinate limit and scale factors within the
+// range of common/ray_limits.h, so that no ray the tools trace breaks Embree's contract.
+#pragma once
+
+#include <revolve/revolve.h>
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace revolve::io {
+
+class SceneError : public std::runtime_error {
+ public:
+  explicit SceneError(const std::string& message) : std::runtime_error(message) {}
+};
+
+using Vec3d = std::array<double, 3>;
+using Rgb = std::array<double, 3>;  // linear RGB
+
+struct SceneCamera {
+  Vec3d from{}, to{}, up{};
+  double fovDegrees = 0;                  // vertical field of view, in (0, 180)
+  std::optional<int> width, height, spp;  // defaults for the renderer's options
+};
+
+struct SceneProfile {
+  // The fraction of a spline's size (its largest coordinate) within which `profile` follows a
+  // curve traced exactly: fine enough that the tools drawing or meshing it do not show it.
+  static constexpr double kDrawingFraction = 1e-5;
+
+  std::string name;
+  // The polyline: the points of a linear profile; for a spline with a "tolerance", the curve as
+  // Profile::fromCurve samples it within that tolerance (what is traced); for a spline traced
+  // exactly, the curve sampled within kDrawingFraction of its size, for the tools that need a
+  // polyline (meshes, plots).
+  Profile profile;
+  double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
+  std::vector<std::string> warnings{};                           // "where: message" for each point the Profile dropped
+  std::string csvFile{};           // the CSV it was read from, as opened; empty for inline points
+  std::optional<Spline> spline{};  // a curved "spline" without a "tolerance": traced exactly
+  double tolerance = 0;            // the "tolerance" given, or 0
+  // The curve `profile` was made from (a curved "spline", with or without a "tolerance"): tools
+  // shading its polyline take the curve's own normals (ShadingNormals(profile, *curve)).
+  std::optional<Spline> curve{};
+};
+
+enum class MaterialType { diffuse, metal, mirror, glass };
+
+struct SceneMaterial {
+  std::string name;
+  MaterialType type = MaterialType::diffuse;
+  Rgb color{1, 1, 1};    // diffuse albedo, metal and mirror reflectance; each in [0, 1]
+  double roughness = 0;  // metal: GGX alpha = roughness^2, in [0, 1]
+  double ior = 1.5;      // glass: index of refraction, in [1, 4]
+  Rgb tint{1, 1, 1};     // glass: transmittance a crossing of its surface keeps, in [0, 1]
+};
+
+// Object to world: x -> translate + rotate(axis, degrees) (scale * x); as matrices in
+// scene/transform.h.
+struct SceneTransform {
+  Vec3d scale{1, 1, 1};       // each > 0
+  Vec3d rotateAxis{0, 0, 1};  // non-zero; normalised by the reader
+  double rotateDegrees = 0;
+  Vec3d translate{0, 0, 0};
+};
+
+struct SceneObject {
+  std::string name;          // empty unless given
+  std::size_t profile = 0;   // index into SceneDescription::profiles
+  std::size_t material = 0;  // index into SceneDescription::materials
+  SceneTransform transform;
+};
+
+struct SceneQuad {
+  std::array<Vec3d, 4> corners{};  // in order around the quad; drawn as triangles (0, 1, 2), (0, 2, 3)
+  std::size_t material = 0;
+};
+
+enum class LightType { point, sun };
+
+struct SceneLight {
+  LightType type = LightType::point;
+  Vec3d position{};         // point
+  Rgb intensity{};          // point: radiant intensity, W/sr per channel
+  Vec3d direction{};        // sun: the direction the light travels (towards the ground), unit length
+  Rgb irradiance{};         // sun: irradiance on a surface facing it
+  double angleDegrees = 0;  // sun: apparent diameter, in [0, 45]; 0 = hard shadows
+};
+
+struct SceneEnvironment {
+  bool sky = false;         // false: uniform `color`
+  Rgb color{0, 0, 0};       // uniform radiance
+  Rgb zenith{}, horizon{};  // sky: radiance straight up and at the horizon (and below it)
+};
+
+struct SceneDescription {
+  std::string file;  // as given to readScene
+  SceneCamera camera;
+  std::vector<SceneProfile> profiles;
+  std::vector<SceneMaterial> materials;
+  std::vector<SceneObject> objects;
+  std::vector<SceneQuad> quads;
+  std::vector<SceneLight> lights;
+  SceneEnvironment environment;
+};
+
+// Parses scene JSON `text`; `file` names it in messages and profile CSVs resolve against
+// `directory`. Throws SceneError.
+SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory);
+// Reads and parses the file at `path` (CSVs relative to its folder). Throws SceneError.
+SceneDescription readScene(const std::string& path);
+
+}  // namespace revolve::io
