@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <numbers>
 
@@ -425,6 +426,42 @@ TEST(EmbreeFilterTest, FiltersWorkInPackets) {
       if (expected) {
         EXPECT_NEAR(packet.ray.tfar[i], double(*expected), 1e-5 * (1.0 + double(*expected)));
       }
+    }
+  }
+}
+
+// A hit's t is a float. A direction of subnormal length (1e-40) puts the can's side, one unit
+// away, at t = 1e40, beyond float's range: no hit, by the pure query, rtcIntersect1, rtcOccluded1
+// and a packet alike (it was reported at t = inf with the segment's id). At 1e-30 the side lies at
+// t = 1e30, within range, and is hit there.
+TEST(EmbreeFloatRangeTest, AHitBeyondFloatsRangeIsNoneAndOneWithinIt) {
+  for (const Method method : {Method::mibit, Method::linear, Method::kajiya}) {
+    SCOPED_TRACE(methodName(method));
+    SingleShapeScene s(
+        Shape(Profile(std::vector<Point2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}), BuildOptions{.method = method}));
+    for (const float dx : {1e-40f, 1e-30f}) {
+      const Ray ray{{0, 0, 0.5f}, {dx, 0, 0}};
+      const bool within = dx > 1e-35f;
+      const std::optional<Hit> pure = intersect(s.shape, ray);
+      ASSERT_EQ(pure.has_value(), within);
+      if (within) EXPECT_NEAR(pure->t, 1.0 / dx, 1e-6 / dx);
+      EXPECT_EQ(occluded(s.shape, ray), within);
+      embree::RayQuery query;
+      RTCRayHit rh = toRayHit(ray);
+      query.intersect(s.scene.get(), rh);
+      EXPECT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, within);
+      EXPECT_EQ(std::isfinite(rh.ray.tfar), within);
+      RTCRay shadow = toRayHit(ray).ray;
+      query.occluded(s.scene.get(), shadow);
+      EXPECT_EQ(shadow.tfar == -std::numeric_limits<float>::infinity(), within);
+      alignas(32) RTCRayHit8 packet{};
+      alignas(32) int valid[8] = {-1, 0, 0, 0, 0, 0, 0, 0};
+      for (int k = 0; k < 8; ++k) {
+        packet.ray.org_z[k] = 0.5f, packet.ray.dir_x[k] = dx, packet.ray.tfar[k] = INFINITY, packet.ray.mask[k] = ~0u;
+        packet.hit.geomID[k] = packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+      }
+      query.intersect(valid, s.scene.get(), packet);
+      EXPECT_EQ(packet.hit.geomID[0] != RTC_INVALID_GEOMETRY_ID, within);
     }
   }
 }

@@ -14,6 +14,7 @@
 #include "util/rounding.h"
 
 #include <cmath>
+#include <limits>
 
 namespace revolve::detail {
 
@@ -82,6 +83,9 @@ struct MeridianRay {
 // Builds the meridian view of `ray` for a shape. Returns false when the ray cannot hit: a
 // non-finite or zero direction, a non-finite origin or range, tnear > tfar, or a line that misses
 // the bounding sphere within [tnear, tfar].
+// The largest finite float: where a hit's t ends (see setUpMeridianRay).
+inline constexpr double kLargestFloat = std::numeric_limits<float>::max();
+
 inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRay& out) noexcept {
   const double ox = ray.origin.x, oy = ray.origin.y, oz = double(ray.origin.z) - frame.zCentre;
   const double Dx = ray.direction.x, Dy = ray.direction.y, Dz = ray.direction.z;
@@ -118,7 +122,10 @@ inline bool setUpMeridianRay(const ShapeFrame& frame, const Ray& ray, MeridianRa
   out.tScale = length;
   out.t0 = tCentre;
   out.lo = std::max((double(ray.tnear) - tCentre) * length, -w);
-  out.hi = std::min((double(ray.tfar) - tCentre) * length, w);  // tfar = inf gives w
+  // A hit's t is a float: beyond the largest finite one it would round to inf, a hit nowhere (a
+  // direction of subnormal length puts the surface there), so the range ends at it. Any tfar
+  // reaching it (inf) then gives w, as every ray of ordinary length does.
+  out.hi = std::min((std::min(double(ray.tfar), kLargestFloat) - tCentre) * length, w);
   if (!(out.lo <= out.hi)) return false;
 
   out.a = dx * dx + dy * dy;

@@ -41,7 +41,7 @@ inline unsigned setUpMeridianRays(const ShapeFrame& frame, const RayLanes& in, M
   const Lanes invLength = splat(1.0) / length;
   const Lanes dx = Dx * invLength, dy = Dy * invLength, dz = Dz * invLength;
   const Lanes lo = maxOf((tnear - tCentre) * length, -w);
-  const Lanes hi = minOf((tfar - tCentre) * length, w);
+  const Lanes hi = minOf((minOf(tfar, splat(kLargestFloat)) - tCentre) * length, w);  // as setUpMeridianRay
   ok &= bits(lo <= hi);
 
   const Lanes a = dx * dx + dy * dy;
