@@ -2,10 +2,10 @@
 
 #include "io/output_set.h"
 
-#include "render/image_output.h"
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
 #include "povray.h"
+#include "render/image_output.h"
 #include "render/renderer.h"
 #include "scene/embree_scene.h"
 #include "smooth_spline.h"

@@ -60,7 +60,7 @@ ReferenceRanges::ReferenceRanges(const io::SceneDescription& scene) {
     profiles_.emplace_back(profile.profile.points().begin(), profile.profile.points().end());
   }
   for (const io::SceneObject& object : scene.objects) {
-    const io::SceneTransform& t = object.transform;
+    const app::Transform& t = object.transform;
     // World to object: scale^-1 rotation^T (x - translate).
     const double theta = t.rotateDegrees * std::numbers::pi / 180, c = std::cos(theta), s = std::sin(theta);
     const auto& k = t.rotateAxis;

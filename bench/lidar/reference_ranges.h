@@ -6,6 +6,7 @@
 // beam), exact to double rounding: what a range error is measured against.
 #pragma once
 
+#include "geometry/vec3d.h"
 #include "io/scene_file.h"
 
 #include <array>
@@ -15,7 +16,7 @@
 
 namespace revolve::bench {
 
-using Vec3d = std::array<double, 3>;
+using app::Vec3d;
 
 struct ReferenceHit {
   double distance;      // along the unit beam

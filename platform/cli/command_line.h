@@ -4,8 +4,8 @@
 // guard that turns any failure of the work into one line and status 1.
 #pragma once
 
-#include "io/tolerance_option.h"
 #include "io/temporary_files.h"
+#include "io/tolerance_option.h"
 
 #include <CLI/CLI.hpp>
 

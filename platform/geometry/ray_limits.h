@@ -1,12 +1,16 @@
-// The ranges the tools trace within, and why: Embree 3's ray contract, and the world coordinates
-// and object scales that keep every ray inside it, in the world and inside every instance. The
-// readers refuse what lies outside (naming the key path or line and the limit); rays are checked
-// against the contract before they reach rtcIntersect1 / rtcOccluded1.
+// The ranges the tools and Python trace within, and why: Embree 3's ray contract, and the world
+// coordinates and object scales that keep every ray inside it, in the world and inside every
+// instance. The readers refuse what lies outside (naming the key path or line and the limit), the
+// placement rule (geometry/placement.h) holds objects' scales to it, and rays are checked against
+// the contract before they reach rtcIntersect1 / rtcOccluded1: the tools' by embreeAccepts, a
+// Python user's, which may come from anywhere, by queryRayAccepted (the tighter ranges within which
+// a ray stays inside the contract through any accepted placement).
 #pragma once
 
 #include <revolve/revolve.h>
 
 #include <cmath>
+#include <string>
 
 namespace revolve::app {
 
@@ -29,6 +33,8 @@ inline bool embreeAccepts(const Ray& ray) noexcept {
 // point light, within 2.25 * 2^40.
 inline constexpr double kMaxWorldCoordinate = 0x1p40;
 inline constexpr double kMaxRayOrigin = 4 * kMaxWorldCoordinate;
+// The coordinate limit as messages state it: "<value> is beyond the coordinate limit: " + this.
+inline constexpr const char* kCoordinateLimitRule = "positions lie within +-2^40 (1.1e12)";
 
 // The scale factors of a placed object lie in [2^-16, 2^40]. Embree maps a world ray into the
 // object by L^-1 = S^-1 R^T, whose rows have 1-norm at most sqrt 3 / s: from an origin within
@@ -50,5 +56,23 @@ static_assert(1.7320508075688772 / kMinScale * (kMaxRayOrigin + kMaxWorldCoordin
 static_assert(kMaxScale * kMaxScale * kMaxScale * 6 <
               3.4e38);  // a float determinant of 3 x 3 entries below 2^40 stays finite
 static_assert(4 * 0x1p-24 / (1 - 4 * 0x1p-24) * 3 * kMaxScaleRatio * 4.5 <= 0.25);
+
+// Rays and points given to a query from outside (Python's RaycastingScene), checked one by one
+// before any reaches Embree: origins and points within kMaxRayOrigin per coordinate; directions
+// within kMaxWorldCoordinate per component, finite and not zero. Above, such rays are shown to stay
+// within Embree's range through any placement the rule accepts.
+inline bool queryPointAccepted(const float* p) noexcept {
+  const auto within = [](float x) { return std::abs(x) <= float(kMaxRayOrigin); };  // false for NaN
+  return within(p[0]) && within(p[1]) && within(p[2]);
+}
+// r: ox, oy, oz, dx, dy, dz.
+inline bool queryRayAccepted(const float* r) noexcept {
+  const auto within = [](float x) { return std::abs(x) <= float(kMaxWorldCoordinate); };
+  return queryPointAccepted(r) && within(r[3]) && within(r[4]) && within(r[5]) && (r[3] != 0 || r[4] != 0 || r[5] != 0);
+}
+// Why a point or ray is refused (the component, its value and the rule), for the message; empty
+// when accepted.
+std::string queryPointFault(const float* p);
+std::string queryRayFault(const float* r);
 
 }  // namespace revolve::app

@@ -153,8 +153,7 @@ class Reader {
     const std::array<double, 3> p = vec3(value, path);
     for (std::size_t i = 0; i < 3; ++i) {
       if (std::abs(p[i]) > app::kMaxWorldCoordinate) {
-        fail(element(path, i),
-             numberText(value[i]) + " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+        fail(element(path, i), numberText(value[i]) + " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
       }
     }
     return p;

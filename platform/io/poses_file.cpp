@@ -38,7 +38,7 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
                        "expected " + std::to_string(columns) + " comma-separated values (" +
                            (withZ ? "x,y,z,yaw" : "x,y,yaw") + "), found " + std::to_string(fields.size()));
     }
-    // `position`: a coordinate, within the limit every position keeps (common/ray_limits.h).
+    // `position`: a coordinate, within the limit every position keeps (geometry/ray_limits.h).
     const auto value = [&](std::size_t i, const char* name, bool emptyIsZero, bool position) {
       if (emptyIsZero && fields[i].empty()) return 0.0;
       const std::optional<double> x = csv::parseNumber<double>(fields[i]);
@@ -49,7 +49,7 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
       if (position && std::abs(*x) > app::kMaxWorldCoordinate) {
         throw InputError(file, lineNumber,
                          std::string(name) + " = " + csv::quote(fields[i]) +
-                             " is beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+                             " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
       }
       return *x;
     };

@@ -1,8 +1,8 @@
 #include "io/pov_scene.h"
 
+#include "geometry/placement.h"
 #include "io/output_set.h"
 #include "io/text_files.h"
-#include "geometry/transform.h"
 
 #include <algorithm>
 #include <charconv>
@@ -40,8 +40,8 @@ std::string colour(const Rgb& c, double scale = 1) {
 // POV-Ray's `matrix <v00, v01, v02, v10, ..., v32>` maps a point p to (p.x v0* + p.y v1* + p.z v2* +
 // v3*): row i is the image of POV-Ray's basis vector i. With the axis swap P (its own inverse), the
 // object's map in POV-Ray's axes is P M P.
-std::string povMatrix(const SceneTransform& transform) {
-  const scene::Matrix3d m = scene::linearPart(transform);
+std::string povMatrix(const app::Transform& transform) {
+  const app::Matrix3d m = app::linearPart(transform);
   constexpr int swap[3] = {0, 2, 1};
   std::string text = "matrix <";
   for (int row = 0; row < 3; ++row) {

@@ -3,7 +3,6 @@
 #include "io/curve_polyline.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
-#include "geometry/transform.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +23,7 @@ using json::Json;
 using json::quotedText;
 using Reader = json::Reader<SceneError>;
 
+using app::cross;
 using json::numberText;
 using json::unitVector;
 
@@ -46,10 +46,6 @@ Rgb rgb(const Reader& in, const Json& value, const std::string& path, double hi)
             numberText(value[i]) + " is out of range: light values lie in [0, 1e18] (the renderer computes in float)");
   }
   return c;
-}
-
-Vec3d cross(Vec3d a, Vec3d b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 SceneCamera readCamera(const Reader& in, const Json& json) {
@@ -229,8 +225,8 @@ std::size_t lookUp(const Reader& in, const std::vector<Named>& list, const Json&
   in.fail(path, std::string("no ") + what + " named " + quotedText(name));
 }
 
-SceneTransform readTransform(const Reader& in, const Json& json, const std::string& path) {
-  SceneTransform transform;
+app::Transform readTransform(const Reader& in, const Json& json, const std::string& path) {
+  app::Transform transform;
   if (const Json* translate = in.optional(json, "translate"))
     transform.translate = in.position(*translate, child(path, "translate"));
   if (const Json* rotate = in.optional(json, "rotate")) {
@@ -243,15 +239,11 @@ SceneTransform readTransform(const Reader& in, const Json& json, const std::stri
     transform.rotateDegrees = in.number((*rotate)[3], element(rotatePath, 3));
   }
   if (const Json* scale = in.optional(json, "scale")) {
+    // The placement rule (geometry/placement.h), factor by factor, each named by its key path.
     const std::string scalePath = child(path, "scale");
     const auto factor = [&](const Json& value, const std::string& where) {
       const double s = in.number(value, where);
-      if (!(s > 0)) in.fail(where, numberText(value) + " is not positive: scale factors must be > 0");
-      if (!(s >= app::kMinScale && s <= app::kMaxScale)) {
-        in.fail(where, numberText(value) +
-                           " is out of range: scale factors lie in [2^-16, 2^40] (1.5e-05 to 1.1e12), "
-                           "within which Embree's float instance transform keeps every ray in its range");
-      }
+      if (const std::optional<std::string> fault = app::scaleFactorFault(s, numberText(value))) in.fail(where, *fault);
       return s;
     };
     if (scale->is_number()) {
@@ -263,12 +255,7 @@ SceneTransform readTransform(const Reader& in, const Json& json, const std::stri
       in.fail(scalePath, "expected a number or [sx, sy, sz]");
     }
     const auto [smallest, largest] = std::minmax({transform.scale[0], transform.scale[1], transform.scale[2]});
-    if (largest > app::kMaxScaleRatio * smallest) {
-      // Every digit the ratio needs: 65537 must not read as a rounded 6.55e+04 within 65536.
-      in.fail(scalePath, "the scale factors differ by a factor " + numberText(largest / smallest) +
-                             ": they lie within a factor 2^16 (65536) of each other, so that Embree's float transform "
-                             "keeps rays leaving the object within range");
-    }
+    if (const std::optional<std::string> fault = app::scaleRatioFault(smallest, largest)) in.fail(scalePath, *fault);
   }
   return transform;
 }
@@ -370,13 +357,8 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     }
     object.transform = readTransform(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
-    if (const double reach = scene::worldReach(scene.profiles[object.profile].profile, object.transform);
-        !(reach <= app::kMaxWorldCoordinate)) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g", reach);  // computed: three digits say it
-      in.fail(path, std::string("the placed object reaches ") + text +
-                        ", beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
-    }
+    const double reach = app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform));
+    if (const std::optional<std::string> fault = app::reachFault(reach)) in.fail(path, *fault);
     scene.objects.push_back(std::move(object));
   }
 

@@ -8,8 +8,12 @@
 // an unreadable profile CSV is a SceneError naming the file, the key path
 // (`objects[12].profile: no profile named "botle"`), the value and the rule, on one line. Positions
 // (and every placed object's reach) lie within the coordinate limit and scale factors within the
-// range of common/ray_limits.h, so that no ray the tools trace breaks Embree's contract.
+// range of geometry/ray_limits.h (the placement rule, geometry/placement.h), so that no ray the tools trace breaks
+// Embree's contract.
 #pragma once
+
+#include "geometry/placement.h"
+#include "geometry/vec3d.h"
 
 #include <revolve/revolve.h>
 
@@ -28,7 +32,7 @@ class SceneError : public std::runtime_error {
   explicit SceneError(const std::string& message) : std::runtime_error(message) {}
 };
 
-using Vec3d = std::array<double, 3>;
+using app::Vec3d;
 using Rgb = std::array<double, 3>;  // linear RGB
 
 struct SceneCamera {
@@ -69,20 +73,11 @@ struct SceneMaterial {
   Rgb tint{1, 1, 1};     // glass: transmittance a crossing of its surface keeps, in [0, 1]
 };
 
-// Object to world: x -> translate + rotate(axis, degrees) (scale * x); as matrices in
-// scene/transform.h.
-struct SceneTransform {
-  Vec3d scale{1, 1, 1};       // each > 0
-  Vec3d rotateAxis{0, 0, 1};  // non-zero; normalised by the reader
-  double rotateDegrees = 0;
-  Vec3d translate{0, 0, 0};
-};
-
 struct SceneObject {
   std::string name;          // empty unless given
   std::size_t profile = 0;   // index into SceneDescription::profiles
   std::size_t material = 0;  // index into SceneDescription::materials
-  SceneTransform transform;
+  app::Transform transform;  // object to world, its scale factors held to the placement rule
 };
 
 struct SceneQuad {

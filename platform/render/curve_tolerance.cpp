@@ -1,8 +1,8 @@
 #include "render/curve_tolerance.h"
 
-#include "io/tolerance_option.h"
+#include "geometry/placement.h"
 #include "io/curve_polyline.h"
-#include "geometry/transform.h"
+#include "io/tolerance_option.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 namespace revolve::render {
 
-using Vec3d = io::Vec3d;
+using app::Vec3d;
 
 CurveTolerance parseCurveTolerance(const std::string& text) {
   const std::optional<app::ToleranceOption> option = app::toleranceOption(text, true);
@@ -35,9 +35,9 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
     for (const Point2& p : profile.profile.points())
       rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-    const io::SceneTransform& t = object.transform;
+    const app::Transform& t = object.transform;
     const double scale = std::max({t.scale[0], t.scale[1], t.scale[2]});
-    const Vec3d middle = scene::rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
+    const Vec3d middle = app::rotate(t, {0, 0, t.scale[2] * 0.5 * (zLow + zHigh)});
     const double radius = scale * std::hypot(rMax, 0.5 * (zHigh - zLow));
     double distance = 0;
     for (int i = 0; i < 3; ++i) {

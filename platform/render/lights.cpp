@@ -14,7 +14,7 @@ using app::operator*;
 
 namespace {
 Color toColor(const io::Rgb& c) { return {float(c[0]), float(c[1]), float(c[2])}; }
-Vec3 toVec3(const io::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
+Vec3 toVec3(const app::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 }  // namespace
 
 Lights::Lights(const std::vector<io::SceneLight>& lights, const io::SceneEnvironment& environment)

@@ -6,9 +6,9 @@
 // mirror or glass: a mirror does not show them and glass casts no caustics.
 #pragma once
 
-#include "render/color.h"
 #include "geometry/vector_math.h"
 #include "io/scene_file.h"
+#include "render/color.h"
 #include "render/random_stream.h"
 
 #include <vector>

@@ -8,9 +8,9 @@
 // both already turned to wo's side (except for glass, which needs to know which side it is on).
 #pragma once
 
-#include "render/color.h"
 #include "geometry/vector_math.h"
 #include "io/scene_file.h"
+#include "render/color.h"
 #include "render/random_stream.h"
 
 #include <optional>

@@ -1,7 +1,7 @@
 #include "render/renderer.h"
+#include "threads/thread_arenas.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <atomic>
 #include <chrono>
@@ -124,7 +124,7 @@ RenderResult render(const io::SceneDescription& description, const scene::Embree
   }
 
   const auto start = std::chrono::steady_clock::now();
-  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  tbb::task_arena& arena = app::threadArena(settings.threads > 0 ? settings.threads : 0);
   arena.execute([&] {
     tbb::parallel_for(0, tiles, [&](int tile) {
       std::optional<PhaseClock> clock;

@@ -2,8 +2,8 @@
 // drawn from its own random stream, so the image depends on the seed only, not on the threads.
 #pragma once
 
-#include "render/integrators.h"
 #include "io/scene_file.h"
+#include "render/integrators.h"
 #include "render/phase_clock.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"

@@ -1,11 +1,11 @@
 #include "robot/lidar.h"
+#include "threads/thread_arenas.h"
 
 #include "robot/beam_noise.h"
 #include "robot/sensor_rig.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -101,7 +101,7 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   };
   if (total == 0) return;
 
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena& arena = app::threadArena(threads > 0 ? threads : 0);
   arena.execute([&] {
     std::vector<io::BeamReturn> ready(std::min<std::uint64_t>(kBlockBeams, total)), next(ready.size());
     std::uint64_t readyFirst = 0;

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace revolve::robot {
-std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
+std::optional<MeridianScale> uprightScale(const app::Transform& transform) {
   const auto& k = transform.rotateAxis;  // unit (the reader normalises it)
   const double turns = std::fmod(transform.rotateDegrees, 360.0);
   const bool aboutZ = k[0] == 0 && k[1] == 0, none = turns == 0;
@@ -16,10 +16,9 @@ std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform) {
   return MeridianScale{transform.scale[0], (aboutZ || none ? 1.0 : -1.0) * transform.scale[2]};
 }
 
-PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform)
-    : shape_(&shape), translate_(transform.translate) {
-  linear_ = scene::linearPart(transform);
-  inverse_ = scene::inverseLinearPart(transform);
+PlacedShape::PlacedShape(const Shape& shape, const app::Transform& transform) : shape_(&shape), placement_(transform) {
+  const app::Matrix3d& linear = placement_.linear();
+  const Vec3d& translate = placement_.translate();
   smallestScale_ = std::min({transform.scale[0], transform.scale[1], transform.scale[2]});
   const std::optional<MeridianScale> upright = uprightScale(transform);
   upright_ = upright.has_value();
@@ -35,9 +34,9 @@ PlacedShape::PlacedShape(const Shape& shape, const io::SceneTransform& transform
   double size = 0;
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
-    const Vec3d rotated = linear_.apply(local);
+    const Vec3d rotated = linear.apply(local);
     for (int a = 0; a < 3; ++a) {
-      const double w = rotated[a] + translate_[a];
+      const double w = rotated[a] + translate[a];
       box_.lower[a] = std::min(box_.lower[a], w);
       box_.upper[a] = std::max(box_.upper[a], w);
       size = std::max(size, std::abs(w) + std::abs(rotated[a]));
@@ -51,29 +50,30 @@ ObstacleClearance PlacedShape::clearance(const RobotBody& robot) const {
 }
 
 ObstacleClearance PlacedShape::uprightClearance(const RobotBody& robot) const {
-  const double dx = robot.x - translate_[0], dy = robot.y - translate_[1];
+  const Vec3d& t = placement_.translate();
+  const double dx = robot.x - t[0], dy = robot.y - t[1];
   const double d = std::hypot(dx, dy);
-  const CylinderClearance c = cylinderClearance(
-      *shape_, {d, robot.radius, robot.zMin - translate_[2], robot.zMax - translate_[2]}, meridianScale_);
+  const CylinderClearance c =
+      cylinderClearance(*shape_, {d, robot.radius, robot.zMin - t[2], robot.zMax - t[2]}, meridianScale_);
   // The profile point lies in the half-plane towards the robot's axis (any, on the shape's axis).
   const double ux = d > 0 ? dx / d : 1.0, uy = d > 0 ? dy / d : 0.0;
   ObstacleClearance result;
   result.value = c.clearance;
-  result.point = {translate_[0] + c.point.r * ux, translate_[1] + c.point.r * uy, c.point.z + translate_[2]};
+  result.point = {t[0] + c.point.r * ux, t[1] + c.point.r * uy, c.point.z + t[2]};
   result.achieved = signedDistance(robot, result.point);
   result.exact = true;
   return result;
 }
 
 std::pair<double, Vec3d> PlacedShape::distanceFrom(const Vec3d& p) const {
-  const Vec3d local = inverse_.apply(Vec3d{p[0] - translate_[0], p[1] - translate_[1], p[2] - translate_[2]});
+  const Vec3d& t = placement_.translate();
+  const Vec3d local = placement_.toObject(p);
   const double rho = std::hypot(local[0], local[1]);
   const MeridianPoint m = closestMeridianPoint(*shape_, {rho, local[2]});
   const double cosPhi = rho > 0 ? local[0] / rho : 1.0, sinPhi = rho > 0 ? local[1] / rho : 0.0;
-  const Vec3d surface = linear_.apply(Vec3d{m.point.r * cosPhi, m.point.r * sinPhi, m.point.z});
+  const Vec3d surface = placement_.linear().apply(Vec3d{m.point.r * cosPhi, m.point.r * sinPhi, m.point.z});
   // |L v| >= (smallest scale) |v| for L = rotation * scale: a lower bound, exact for equal scales.
-  return {smallestScale_ * m.distance,
-          {surface[0] + translate_[0], surface[1] + translate_[1], surface[2] + translate_[2]}};
+  return {smallestScale_ * m.distance, {surface[0] + t[0], surface[1] + t[1], surface[2] + t[2]}};
 }
 
 ObstacleClearance PlacedShape::tiltedClearance(const RobotBody& robot) const {

@@ -1,5 +1,5 @@
 // A surface of revolution placed in the world by its scene transform (translate . rotate . scale,
-// io::SceneTransform, in double precision), and the robot's clearance to it.
+// app::Transform, in double precision), and the robot's clearance to it.
 //
 // Upright (its axis vertical: turned only about z, or upside down, with equal x and y scales), the
 // clearance is exact: revolve::cylinderClearance in the meridian plane. Tilted, it is a lower
@@ -10,9 +10,9 @@
 // distance to the surface's world box.
 #pragma once
 
+#include "geometry/placement.h"
 #include "io/scene_file.h"
 #include "robot/robot_body.h"
-#include "geometry/transform.h"
 
 #include <revolve/revolve.h>
 
@@ -23,12 +23,12 @@ namespace revolve::robot {
 // The meridian scale of an upright placement (the axis stays vertical: turned only about z, by no
 // angle, or half a turn about a horizontal axis, with equal x and y scales); nullopt when tilted.
 // Decided from the description, not from rounded sines.
-std::optional<MeridianScale> uprightScale(const io::SceneTransform& transform);
+std::optional<MeridianScale> uprightScale(const app::Transform& transform);
 
 class PlacedShape {
  public:
   // Keeps a reference to `shape`, which must outlive it.
-  PlacedShape(const Shape& shape, const io::SceneTransform& transform);
+  PlacedShape(const Shape& shape, const app::Transform& transform);
 
   bool upright() const { return upright_; }
   // A world box holding the surface.
@@ -43,8 +43,7 @@ class PlacedShape {
   std::pair<double, Vec3d> distanceFrom(const Vec3d& p) const;
 
   const Shape* shape_;
-  scene::Matrix3d linear_{}, inverse_{};  // object to world (scene::linearPart), world to object
-  Vec3d translate_{};
+  app::Placement placement_;  // its inverse is the transform's own (inverseLinearPart), not a cofactor one
   double smallestScale_ = 1;
   bool upright_ = false;
   MeridianScale meridianScale_;  // upright only

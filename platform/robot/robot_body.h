@@ -10,10 +10,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include "geometry/vec3d.h"
 
 namespace revolve::robot {
 
-using Vec3d = std::array<double, 3>;
+using app::Vec3d;
 
 struct RobotBody {
   double x = 0, y = 0;        // the axis

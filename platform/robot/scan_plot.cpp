@@ -1,10 +1,10 @@
 #include "robot/scan_plot.h"
 
+#include "geometry/placement.h"
 #include "io/temporary_files.h"
 #include "io/text_files.h"
 #include "robot/placed_shape.h"
 #include "robot/sensor_rig.h"
-#include "geometry/transform.h"
 
 #include <nlohmann/json.hpp>
 
@@ -97,7 +97,7 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
   std::stable_sort(surfaces.begin(), surfaces.end(), [](const Surface& a, const Surface& b) { return a.top < b.top; });
 
   for (const io::SceneObject& object : scene.objects) {
-    const scene::Matrix3d linear = scene::linearPart(object.transform);
+    const app::Matrix3d linear = app::linearPart(object.transform);
     const auto& t = object.transform.translate;
     std::vector<Point> samples;
     constexpr int kAzimuths = 96;  // outlines within 0.05% of a circle's radius

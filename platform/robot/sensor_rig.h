@@ -3,21 +3,22 @@
 // directions of its fans. Double precision; rays are rounded to float once, at the end.
 #pragma once
 
+#include "geometry/placement.h"
+#include "geometry/vec3d.h"
 #include "io/poses_file.h"
 #include "io/sensor_file.h"
-#include "geometry/transform.h"
 
 #include <array>
 #include <cmath>
 
 namespace revolve::robot {
 
-using Vec3d = std::array<double, 3>;
+using app::Vec3d;
 
 // A rotation (world from sensor) and the sensor's origin in the world.
 struct SensorFrame {
   Vec3d origin{};
-  scene::Matrix3d rotation{};
+  app::Matrix3d rotation{};
 
   Vec3d rotate(const Vec3d& v) const { return rotation.apply(v); }
 };
@@ -31,10 +32,10 @@ inline Vec3d beamDirection(double azimuth, double elevation) {
 // World from sensor: the robot at (x, y, z) turned by yaw about +Z, carrying the sensor at its
 // mounting position turned by Rz(yaw) Ry(pitch) Rx(roll) (ROS's fixed-axis roll, pitch, yaw).
 inline SensorFrame sensorFrame(const io::SensorPose& mount, const io::RobotPose& pose) {
-  const scene::Matrix3d robot = scene::rotationAboutZ(pose.yaw);
+  const app::Matrix3d robot = app::rotationAboutZ(pose.yaw);
   SensorFrame frame;
-  frame.rotation = robot * (scene::rotationAboutZ(mount.yaw) *
-                            (scene::rotationAboutY(mount.pitch) * scene::rotationAboutX(mount.roll)));
+  frame.rotation =
+      robot * (app::rotationAboutZ(mount.yaw) * (app::rotationAboutY(mount.pitch) * app::rotationAboutX(mount.roll)));
   const SensorFrame robotOnly{{}, robot};
   const Vec3d mounted = robotOnly.rotate(mount.position);
   frame.origin = {pose.x + mounted[0], pose.y + mounted[1], pose.z + mounted[2]};

@@ -32,7 +32,7 @@ class Camera {
       right_ = normalize(cross(forward_, up));
       up_ = cross(right_, forward_);
     } else {
-      using V = io::Vec3d;
+      using V = app::Vec3d;
       const auto crossed = [](V a, V b) {
         return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
       };

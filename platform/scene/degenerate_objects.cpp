@@ -1,6 +1,6 @@
 #include "scene/degenerate_objects.h"
 
-#include "geometry/transform.h"
+#include "geometry/placement.h"
 
 #include <algorithm>
 #include <charconv>
@@ -47,7 +47,7 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
     // Its world size against one float step (2^-23 relative) at its distance from the origin.
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
     for (const Point2 p : points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-    const Matrix3d linear = linearPart(object.transform);
+    const app::Matrix3d linear = app::linearPart(object.transform);
     double size = 0;
     for (int a = 0; a < 3; ++a) {
       // The box's extent along world axis a: |L_a0| + |L_a1| times 2 rmax, plus |L_a2| (zmax - zmin).
@@ -64,10 +64,10 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
     }
     if (camera && profile.closed()) {
       // The camera in the object's frame: L^-1 (from - T), L^-1 = S^-1 R^T.
-      const Matrix3d rotation = rotationOf(object.transform);
+      const app::Matrix3d rotation = app::rotationOf(object.transform);
       const auto& from = scene.camera.from;
-      const io::Vec3d d{from[0] - t[0], from[1] - t[1], from[2] - t[2]};
-      io::Vec3d local{};
+      const app::Vec3d d{from[0] - t[0], from[1] - t[1], from[2] - t[2]};
+      app::Vec3d local{};
       for (int r = 0; r < 3; ++r) {
         local[r] = (rotation[0][r] * d[0] + rotation[1][r] * d[1] + rotation[2][r] * d[2]) / object.transform.scale[r];
       }

@@ -2,9 +2,9 @@
 
 #include "embree/embree_rays.h"
 #include "embree/memory_check.h"
+#include "geometry/placement.h"
 #include "geometry/ray_limits.h"
 #include "geometry/vector_math.h"
-#include "geometry/transform.h"
 
 #include <tbb/parallel_for.h>
 
@@ -18,7 +18,7 @@
 
 namespace revolve::scene {
 
-using app::operator+;  // common/vector_math.h
+using app::operator+;  // geometry/vector_math.h
 using app::operator-;
 using app::operator*;
 
@@ -27,8 +27,6 @@ namespace {
 constexpr double kUnitRoundoff = 0x1p-24;  // float's u
 // pbrt-v4's gamma(n) = n u / (1 - n u): the relative error bound of n float operations.
 constexpr double gamma(int n) { return n * kUnitRoundoff / (1 - n * kUnitRoundoff); }
-
-Vec3 toVec3(const io::Vec3d& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 
 float awayFrom(float value, float offset) {
   if (offset > 0) return std::nextafter(value, std::numeric_limits<float>::infinity());
@@ -90,39 +88,52 @@ ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
 
 }  // namespace
 
+// One profile built into Embree, whichever objects show it.
 struct EmbreeScene::Prototype {
-  Profile profile;
-  ShadingNormals normals;
-  std::optional<Shape> shape;
-  std::optional<Geometry> geometry;
+  std::optional<Shape> shape;                 // traced exactly
+  std::optional<Profile> profile;             // the polyline of a mesh or cone curve (and a scene file's profile)
+  std::optional<ShadingNormals> normals;      // a scene file's profiles: smooth shading
+  std::optional<revolve::Geometry> geometry;  // the exact surface in Embree
   std::optional<ConeCurveGeometry> cone;
   RTCGeometry mesh = nullptr;  // retained while the prototype lives
   const float* meshVertices = nullptr;
   const std::uint32_t* meshIndices = nullptr;
   std::uint32_t slices = 0;
-  app::Scene scene;
+  app::Scene scene;  // the one-geometry scene instances show; none for a geometry attached directly
+  // filteredScene(): the same surface again with the filter, and its scene.
+  std::optional<revolve::Geometry> filtered;
+  app::Scene filteredScene;
 
+  // A scene file's profile, as `settings` build it, in a scene of its own.
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
       : profile(source.profile), normals(shadingNormalsOf(source)), scene(app::newScene(device)) {
     if (settings.mesh) {
       slices = settings.slices;
-      mesh = newTessellatedGeometry(device, profile, slices);
+      mesh = newTessellatedGeometry(device, *profile, slices);
       meshVertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_VERTEX, 0));
       meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_INDEX, 0));
       if (meshVertices == nullptr || meshIndices == nullptr) throw std::runtime_error("Embree gave no mesh buffers");
       rtcAttachGeometry(scene.get(), mesh);
     } else if (settings.embreeCone) {
-      cone.emplace(device, profile);
+      cone.emplace(device, *profile);
       rtcAttachGeometry(scene.get(), cone->handle());
     } else if (source.spline) {
       shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
-      geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
+      geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
       rtcAttachGeometry(scene.get(), geometry->handle());
     } else {
-      shape.emplace(profile, settings.options);
-      geometry.emplace(device, *shape, Geometry::Options{.countStats = settings.countStats});
+      shape.emplace(*profile, settings.options);
+      geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
       rtcAttachGeometry(scene.get(), geometry->handle());
     }
+    rtcCommitScene(scene.get());
+  }
+  // A shape traced exactly, in a scene of its own when it is to be instanced.
+  Prototype(Shape traced, RTCDevice device, bool instanced) : shape(std::move(traced)) {
+    geometry.emplace(device, *shape);
+    if (!instanced) return;
+    scene = app::newScene(device);
+    rtcAttachGeometry(scene.get(), geometry->handle());
     rtcCommitScene(scene.get());
   }
   ~Prototype() {
@@ -130,11 +141,19 @@ struct EmbreeScene::Prototype {
   }
   Prototype(const Prototype&) = delete;
   Prototype& operator=(const Prototype&) = delete;
+
+  // The profile's polyline for recovering segments, u and v from a point (meshes, cone curves).
+  const Profile& polyline() const { return profile ? *profile : shape->profile(); }
 };
 
+// An object: a prototype where its placement puts it.
 struct EmbreeScene::Instance {
-  std::uint32_t prototype = 0, material = 0;
-  Matrix3d linear{}, normalMatrix{};  // object to world, and its inverse transpose for normals
+  std::uint32_t id = 0, prototype = 0, material = 0;
+  app::Placement placement;
+  bool attachedDirectly = false;  // the identity, attached to the top scene itself
+  // What a hit needs of the placement, as Embree holds it: the linear part rounded to float, the
+  // inverse transpose of that for normals, the translation in float.
+  app::Matrix3d linear{}, normalMatrix{};
   Vec3 translate{};
   // Embree maps the world ray into object space in float: o' = L^-1 (o - T), d' = L^-1 d, each
   // component within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d|. Mapped back through L, the
@@ -143,9 +162,11 @@ struct EmbreeScene::Instance {
   float transformErrorFactor = 0;
 };
 
-EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings)
-    : memory_(std::make_unique<MemoryCounter>()), device_(app::newDevice()) {
-  const auto start = std::chrono::steady_clock::now();
+EmbreeScene::EmbreeScene(const Layout& layout, bool unitDirections)
+    : memory_(std::make_unique<MemoryCounter>()),
+      device_(app::newDevice()),
+      layout_(layout),
+      unitDirections_(unitDirections) {
   rtcSetDeviceMemoryMonitorFunction(
       device_.get(),
       [](void* user, ssize_t bytes, bool) {
@@ -156,7 +177,20 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
         return true;
       },
       memory_.get());
+  top_ = app::newScene(device_.get());
+  if (layout.robust) rtcSetSceneFlags(top_.get(), RTC_SCENE_FLAG_ROBUST);
+}
 
+EmbreeScene::EmbreeScene(const Layout& layout) : EmbreeScene(layout, false) {}
+
+EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings)
+    : EmbreeScene(Layout{}, settings.embreeCone) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto objectName = [&](std::size_t i) {
+    const io::SceneObject& object = description.objects[i];
+    return description.file + ": objects[" + std::to_string(i) + "]" +
+           (object.name.empty() ? "" : " \"" + object.name + "\"");
+  };
   if (settings.embreeCone) {
     for (std::size_t i = 0; i < description.objects.size(); ++i) {
       const io::SceneObject& object = description.objects[i];
@@ -164,8 +198,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       // A profile made from a curve is traced as its polyline: its points are that polyline's, not
       // the scene's, and the message says so.
       const bool fromCurve = profile.spline || profile.tolerance > 0;
-      std::string which = description.file + ": objects[" + std::to_string(i) + "]" +
-                          (object.name.empty() ? "" : " \"" + object.name + "\"") + " (profiles." + profile.name;
+      std::string which = objectName(i) + " (profiles." + profile.name;
       if (fromCurve) {
         double size = 0;  // as the scene reader measures a spline (io::SceneProfile::kDrawingFraction)
         if (profile.spline) {
@@ -181,7 +214,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
               coneCurveLimitation(profile.profile, fromCurve ? "polyline point" : "profile point")) {
         throw std::runtime_error(which + " cannot be traced as Embree's linear cone curve: " + *limitation);
       }
-      const io::Vec3d& scale = object.transform.scale;
+      const app::Vec3d& scale = object.transform.scale;
       if (scale[0] != 1 || scale[1] != 1 || scale[2] != 1) {
         char text[96];
         std::snprintf(text, sizeof text, "%.9g, %.9g, %.9g", scale[0], scale[1], scale[2]);
@@ -191,7 +224,6 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       }
     }
   }
-  unitDirections_ = settings.embreeCone;
 
   // Each profile used by an object is built once (in parallel: shapes are independent).
   std::vector<std::int64_t> prototypeOf(description.profiles.size(), -1);
@@ -215,80 +247,206 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     prototypes_[i] = std::make_unique<Prototype>(description.profiles[used[i]], device_.get(), settings);
   });
 
-  top_ = app::newScene(device_.get());
   instances_.reserve(description.objects.size());
   for (std::size_t i = 0; i < description.objects.size(); ++i) {
     const io::SceneObject& object = description.objects[i];
-    Instance instance;
-    instance.prototype = std::uint32_t(prototypeOf[object.profile]);
-    instance.material = std::uint32_t(object.material);
-    instance.linear = roundedToFloat(linearPart(object.transform));  // the floats Embree will use
-    const Matrix3d inv = inverse(instance.linear);
-    // What the reader's limits on scales guarantee (common/ray_limits.h), checked here too for
-    // descriptions made in code: Embree's object-space rays stay within its range.
-    if (!(inv.infinityNorm() * (app::kMaxRayOrigin + app::kMaxWorldCoordinate) <= 0.5 * double(app::kEmbreeLargest)) ||
-        !(instance.linear.infinityNorm() <= 3 * app::kMaxScale) ||
-        !(instance.linear.infinityNorm() * inv.infinityNorm() <= 3 * app::kMaxScaleRatio * (1 + 0x1p-20))) {
-      throw std::runtime_error(
-          description.file + ": objects[" + std::to_string(i) +
-          "]: its transform would carry rays beyond Embree's range; scale factors lie in [2^-16, 2^40], "
-          "within a factor 2^16 of each other");
+    std::optional<app::Placement> placement;
+    try {
+      // The reader holds transforms to the placement rule; held again here for descriptions made in code.
+      placement.emplace(object.transform);
+    } catch (const app::PlacementError& error) {
+      throw std::runtime_error(objectName(i) + ": " + error.what());
     }
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) instance.normalMatrix.m[r][c] = inv.m[c][r];
-    }
-    instance.translate = toVec3(object.transform.translate);
-    instance.transformErrorFactor = float(gamma(4) * instance.linear.infinityNorm() * inv.infinityNorm());
-    float columns[12];
-    for (int c = 0; c < 3; ++c) {
-      for (int r = 0; r < 3; ++r) columns[3 * c + r] = float(instance.linear.m[r][c]);
-    }
-    columns[9] = instance.translate.x;
-    columns[10] = instance.translate.y;
-    columns[11] = instance.translate.z;
-    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geometry, prototypes_[instance.prototype]->scene.get());
-    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(top_.get(), geometry, unsigned(i));
-    rtcReleaseGeometry(geometry);
-    instances_.push_back(instance);
+    addInstance(std::uint32_t(prototypeOf[object.profile]), *placement, std::uint32_t(object.material));
   }
 
   if (!description.quads.empty()) {
-    RTCGeometry triangles = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        triangles, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * description.quads.size()));
-    auto* indices =
-        static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(triangles, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                            3 * sizeof(std::uint32_t), 2 * description.quads.size()));
+    TriangleMesh quads;
     for (std::size_t q = 0; q < description.quads.size(); ++q) {
       const io::SceneQuad& quad = description.quads[q];
-      for (int c = 0; c < 4; ++c) {
-        const Vec3 v = toVec3(quad.corners[c]);
-        quadVertices_.push_back(v);
-        vertices[3 * (4 * q + c) + 0] = v.x;
-        vertices[3 * (4 * q + c) + 1] = v.y;
-        vertices[3 * (4 * q + c) + 2] = v.z;
+      for (const app::Vec3d& corner : quad.corners) {
+        for (const double x : corner) quads.vertices.push_back(float(x));
       }
-      const std::uint32_t base = std::uint32_t(4 * q);
-      const std::uint32_t triangle[6] = {base, base + 1, base + 2, base, base + 2, base + 3};
-      std::copy(triangle, triangle + 6, indices + 6 * q);
-      quadMaterials_.push_back(std::uint32_t(quad.material));
+      const auto base = std::uint32_t(4 * q);
+      for (const std::uint32_t k : {base, base + 1, base + 2, base, base + 2, base + 3}) quads.triangles.push_back(k);
+      quads.quadMaterials.push_back(std::uint32_t(quad.material));
     }
-    rtcCommitGeometry(triangles);
-    rtcAttachGeometryByID(top_.get(), triangles, unsigned(description.objects.size()));
-    rtcReleaseGeometry(triangles);
+    quads.vertices.push_back(0);
+    addMesh(std::move(quads));
   }
-  rtcCommitScene(top_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE)
-    throw std::runtime_error(description.file + ": Embree failed to build the scene");
+  commit();
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 EmbreeScene::~EmbreeScene() {
   top_.reset();
+  filtered_.reset();
   prototypes_.clear();
+}
+
+std::uint32_t EmbreeScene::addRevolution(Shape shape, const app::Placement& placement, std::uint32_t material) {
+  if (geometries_.size() >= RTC_INVALID_GEOMETRY_ID)
+    throw std::length_error("a scene holds at most 2^32 - 1 geometries");
+  const bool direct = layout_.identityUninstanced && placement.isIdentity();
+  prototypes_.push_back(std::make_unique<Prototype>(std::move(shape), device_.get(), !direct));
+  return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
+}
+
+std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Placement& placement,
+                                       std::uint32_t material) {
+  const auto id = std::uint32_t(geometries_.size());
+  Instance instance;
+  instance.id = id;
+  instance.prototype = prototype;
+  instance.material = material;
+  instance.placement = placement;
+  instance.linear = app::roundedToFloat(placement.linear());  // the floats Embree will use
+  const app::Matrix3d inv = app::inverse(instance.linear);
+  instance.normalMatrix = inv.transposed();
+  const app::Vec3d& t = placement.translate();
+  instance.translate = {float(t[0]), float(t[1]), float(t[2])};
+  instance.transformErrorFactor = float(gamma(4) * instance.linear.infinityNorm() * inv.infinityNorm());
+  const Prototype& built = *prototypes_[prototype];
+  if (!built.scene) {
+    instance.attachedDirectly = true;
+    rtcAttachGeometryByID(top_.get(), built.geometry->handle(), id);
+  } else {
+    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, built.scene.get());
+    const std::array<float, 12> columns = placement.embreeColumns();
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(top_.get(), geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+  geometries_.push_back({false, std::uint32_t(instances_.size())});
+  instances_.push_back(std::move(instance));
+  filteredCurrent_ = false;
+  return id;
+}
+
+std::uint32_t EmbreeScene::addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles) {
+  TriangleMesh mesh;
+  mesh.vertices.reserve(vertices.size() + 1);
+  mesh.vertices.assign(vertices.begin(), vertices.end());
+  mesh.vertices.push_back(0);
+  mesh.triangles.assign(triangles.begin(), triangles.end());
+  return addMesh(std::move(mesh));
+}
+
+namespace {
+
+// A triangle geometry over `mesh`'s arrays (shared: they stay where they are).
+RTCGeometry newTriangles(RTCDevice device, const TriangleMesh& mesh) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
+                             3 * sizeof(float), mesh.vertexCount());
+  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
+                             3 * sizeof(std::uint32_t), mesh.triangleCount());
+  return geometry;
+}
+
+}  // namespace
+
+std::uint32_t EmbreeScene::addMesh(TriangleMesh mesh) {
+  if (geometries_.size() >= RTC_INVALID_GEOMETRY_ID)
+    throw std::length_error("a scene holds at most 2^32 - 1 geometries");
+  const auto id = std::uint32_t(geometries_.size());
+  meshes_.push_back(std::move(mesh));
+  RTCGeometry geometry = newTriangles(device_.get(), meshes_.back());
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(top_.get(), geometry, id);
+  rtcReleaseGeometry(geometry);
+  geometries_.push_back({true, std::uint32_t(meshes_.size() - 1)});
+  filteredCurrent_ = false;
+  return id;
+}
+
+void EmbreeScene::commit() {
+  rtcCommitScene(top_.get());
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+}
+
+const Shape* EmbreeScene::shapeOf(std::uint32_t id) const noexcept {
+  const Geometry& g = geometries_[id];
+  if (g.mesh) return nullptr;
+  const Prototype& prototype = *prototypes_[instances_[g.index].prototype];
+  return prototype.shape ? &*prototype.shape : nullptr;
+}
+
+const app::Placement& EmbreeScene::placementOf(std::uint32_t id) const noexcept {
+  static const app::Placement identity;
+  const Geometry& g = geometries_[id];
+  return g.mesh ? identity : instances_[g.index].placement;
+}
+
+const TriangleMesh* EmbreeScene::meshOf(std::uint32_t id) const noexcept {
+  const Geometry& g = geometries_[id];
+  return g.mesh ? &meshes_[g.index] : nullptr;
+}
+
+bool EmbreeScene::uninstanced(std::uint32_t id) const noexcept {
+  const Geometry& g = geometries_[id];
+  return g.mesh || instances_[g.index].attachedDirectly;
+}
+
+RTCScene EmbreeScene::filteredScene(RTCFilterFunctionN filter) {
+  if (filteredCurrent_) return filtered_.get();
+  app::Scene scene = app::newScene(device_.get());
+  if (layout_.robust) rtcSetSceneFlags(scene.get(), RTC_SCENE_FLAG_ROBUST);
+  for (std::uint32_t id = 0; id < geometries_.size(); ++id) {
+    const Geometry& g = geometries_[id];
+    if (g.mesh) {
+      RTCGeometry geometry = newTriangles(device_.get(), meshes_[g.index]);
+      rtcSetGeometryIntersectFilterFunction(geometry, filter);
+      rtcCommitGeometry(geometry);
+      rtcAttachGeometryByID(scene.get(), geometry, id);
+      rtcReleaseGeometry(geometry);
+      continue;
+    }
+    const Instance& instance = instances_[g.index];
+    Prototype& prototype = *prototypes_[instance.prototype];
+    if (!prototype.shape) throw std::logic_error("filteredScene: only surfaces traced exactly carry filters");
+    if (!prototype.filtered) {
+      prototype.filtered.emplace(device_.get(), *prototype.shape);
+      prototype.filtered->setIntersectFilter(filter);
+      rtcCommitGeometry(prototype.filtered->handle());
+    }
+    if (instance.attachedDirectly) {
+      rtcAttachGeometryByID(scene.get(), prototype.filtered->handle(), id);
+      continue;
+    }
+    if (!prototype.filteredScene) {
+      prototype.filteredScene = app::newScene(device_.get());
+      rtcAttachGeometry(prototype.filteredScene.get(), prototype.filtered->handle());
+      rtcCommitScene(prototype.filteredScene.get());
+    }
+    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, prototype.filteredScene.get());
+    const std::array<float, 12> columns = instance.placement.embreeColumns();
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(scene.get(), geometry, id);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(scene.get());
+  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
+  filtered_ = std::move(scene);
+  filteredCurrent_ = true;
+  return filtered_.get();
+}
+
+std::uint32_t EmbreeScene::objectOf(const RTCHit& hit) const noexcept {
+  const std::uint32_t id = hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? hit.instID[0] : hit.geomID;
+  const Geometry& g = geometries_[id];
+  if (g.mesh && !meshes_[g.index].quadMaterials.empty()) return id + hit.primID / 2;  // quads follow the objects
+  return id;
+}
+
+std::optional<WorldHit> EmbreeScene::hitOf(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
+  const std::uint32_t id = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayHit.hit.instID[0] : rayHit.hit.geomID;
+  const Geometry& g = geometries_[id];
+  return g.mesh ? triangleHit(id, ray, rayHit) : instanceHit(instances_[g.index], ray, rayHit);
 }
 
 std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
@@ -302,7 +460,7 @@ std::optional<WorldHit> EmbreeScene::intersect(const Ray& ray) const noexcept {
   query.intersect(top_.get(), rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
-  return rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(ray, rayHit) : quadHit(ray, rayHit);
+  return hitOf(ray, rayHit);
 }
 
 std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
@@ -316,9 +474,7 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
   query.intersect(top_.get(), rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
-  const bool instance = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-  return RangeHit{rayHit.ray.tfar,
-                  instance ? rayHit.hit.instID[0] : std::uint32_t(instances_.size() + rayHit.hit.primID / 2)};
+  return RangeHit{rayHit.ray.tfar, objectOf(rayHit.hit)};
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
@@ -368,7 +524,7 @@ void EmbreeScene::intersect(std::span<const Ray> rays, std::span<std::optional<W
       continue;
     }
     rayHit.ray.tfar /= lengths[k];
-    hits[k] = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? instanceHit(rays[k], rayHit) : quadHit(rays[k], rayHit);
+    hits[k] = hitOf(rays[k], rayHit);
   }
 }
 
@@ -382,21 +538,22 @@ void EmbreeScene::nearest(std::span<const Ray> rays, std::span<std::optional<Ran
       continue;
     }
     const float t = packet.ray.tfar[k] / lengths[k];
-    const std::uint32_t instance = packet.hit.instID[0][k];
-    hits[k] =
-        RangeHit{t, instance != RTC_INVALID_GEOMETRY_ID ? instance
-                                                        : std::uint32_t(instances_.size() + packet.hit.primID[k] / 2)};
+    RTCHit hit{};
+    hit.instID[0] = packet.hit.instID[0][k];
+    hit.geomID = packet.hit.geomID[k];
+    hit.primID = packet.hit.primID[k];
+    hits[k] = RangeHit{t, objectOf(hit)};
   }
 }
 
-std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
-  const Instance& instance = instances_[rayHit.hit.instID[0]];
+std::optional<WorldHit> EmbreeScene::instanceHit(const Instance& instance, const Ray& ray,
+                                                 const RTCRayHit& rayHit) const noexcept {
   const Prototype& prototype = *prototypes_[instance.prototype];
   WorldHit hit;
   hit.t = rayHit.ray.tfar;
   hit.ray = ray;
   hit.material = instance.material;
-  hit.object = rayHit.hit.instID[0];
+  hit.object = instance.id;
   Vec3 objectNormal, shadingNormal;
   if (prototype.cone) {
     // Embree's cone curve: its Ng turned to revolve's side, the profile segment and u, v recovered
@@ -407,14 +564,15 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     const std::uint32_t segment = cone.profileSegment(rayHit.hit.primID, rayHit.hit.u, ng);
     hit.point = ray.origin + hit.t * ray.direction;
     const Vec3 offset = hit.point - instance.translate;  // world to object: L^-1 (p - T), L^-1 = normalMatrix^T
-    const Matrix3d& n = instance.normalMatrix;
+    const app::Matrix3d& n = instance.normalMatrix;
     const Vec3 local{float(n.m[0][0] * offset.x + n.m[1][0] * offset.y + n.m[2][0] * offset.z),
                      float(n.m[0][1] * offset.x + n.m[1][1] * offset.y + n.m[2][1] * offset.z),
                      float(n.m[0][2] * offset.x + n.m[1][2] * offset.y + n.m[2][2] * offset.z)};
     objectNormal = cone.normalSign(rayHit.hit.primID) * ng;
-    const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
-    shadingNormal = prototype.normals.normal(segment, u, v);
-    const float residual = float(instance.linear.infinityNorm() * distanceToSegment(prototype.profile, segment, local));
+    const auto [u, v] = surfaceParameters(prototype.polyline(), segment, local);
+    shadingNormal = prototype.normals->normal(segment, u, v);
+    const float residual =
+        float(instance.linear.infinityNorm() * distanceToSegment(prototype.polyline(), segment, local));
     const float rounding =
         float(gamma(3)) * app::maxComponent(app::absolute(ray.origin) + app::absolute(hit.t * ray.direction));
     hit.pointError = {residual + rounding, residual + rounding, residual + rounding};
@@ -424,9 +582,9 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
     hit.point = ray.origin + hit.t * ray.direction;
     objectNormal = {rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
     // A curve's geometric normal is smooth already; a polyline's is interpolated between vertices.
-    shadingNormal = prototype.shape->spline() != nullptr
-                        ? objectNormal
-                        : prototype.normals.normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v);
+    shadingNormal = prototype.shape->spline() != nullptr ? objectNormal
+                    : prototype.normals ? prototype.normals->normal(rayHit.hit.primID, rayHit.hit.u, rayHit.hit.v)
+                                        : objectNormal;
     const Vec3 magnitude =
         app::absolute(ray.origin) + app::absolute(instance.translate) + app::absolute(hit.t * ray.direction);
     hit.transformError = instance.transformErrorFactor * app::maxComponent(magnitude);
@@ -445,8 +603,8 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
         float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
     objectNormal = app::cross(p1 - p0, p2 - p0);  // outwards for a profile listed bottom to top, as Ng
     const std::uint32_t segment = rayHit.hit.primID / (2 * prototype.slices);
-    const auto [u, v] = surfaceParameters(prototype.profile, segment, local);
-    shadingNormal = prototype.normals.normal(segment, u, v);
+    const auto [u, v] = surfaceParameters(prototype.polyline(), segment, local);
+    shadingNormal = prototype.normals->normal(segment, u, v);
     // World point L p + T: its own rounding (gamma(3) (|L| |p| + |T|)) plus the object error through |L|.
     hit.point = instance.linear.apply(local) + instance.translate;
     hit.pointError =
@@ -458,17 +616,21 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Ray& ray, const RTCRayHit
   return hit;
 }
 
-std::optional<WorldHit> EmbreeScene::quadHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
-  const std::uint32_t quad = rayHit.hit.primID / 2;
-  const Vec3* corner = quadVertices_.data() + 4 * quad;
-  const bool second = rayHit.hit.primID % 2 == 1;
-  const Vec3 p0 = corner[0], p1 = second ? corner[2] : corner[1], p2 = second ? corner[3] : corner[2];
+std::optional<WorldHit> EmbreeScene::triangleHit(std::uint32_t id, const Ray& ray,
+                                                 const RTCRayHit& rayHit) const noexcept {
+  const TriangleMesh& mesh = meshes_[geometries_[id].index];
+  const std::uint32_t* index = mesh.triangles.data() + 3 * std::size_t(rayHit.hit.primID);
+  const auto vertex = [&](int k) {
+    const float* v = mesh.vertices.data() + 3 * std::size_t(index[k]);
+    return Vec3{v[0], v[1], v[2]};
+  };
+  const Vec3 p0 = vertex(0), p1 = vertex(1), p2 = vertex(2);
   const float b1 = rayHit.hit.u, b2 = rayHit.hit.v, b0 = 1 - b1 - b2;
   WorldHit hit;
   hit.t = rayHit.ray.tfar;
   hit.ray = ray;
-  hit.material = quadMaterials_[quad];
-  hit.object = std::uint32_t(instances_.size() + quad);
+  hit.material = mesh.quadMaterials.empty() ? 0 : mesh.quadMaterials[rayHit.hit.primID / 2];
+  hit.object = objectOf(rayHit.hit);
   hit.point = b0 * p0 + b1 * p1 + b2 * p2;
   hit.pointError = float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
   hit.geometricNormal = app::normalize(app::cross(p1 - p0, p2 - p0));
@@ -484,6 +646,13 @@ Vec3 EmbreeScene::spawn(const WorldHit& hit, Vec3 direction) const noexcept {
   // The error box's extent along the normal: sum |n_i| e_i.
   const float distance = app::dot(app::absolute(hit.geometricNormal), hit.pointError);
   return pushAlongNormal(hit.point, hit.geometricNormal, distance, direction);
+}
+
+std::size_t EmbreeScene::meshBytes() const noexcept {
+  std::size_t bytes = 0;
+  for (const TriangleMesh& mesh : meshes_)
+    bytes += mesh.vertices.capacity() * sizeof(float) + mesh.triangles.capacity() * sizeof(std::uint32_t);
+  return bytes;
 }
 
 Stats EmbreeScene::stats() const noexcept {
@@ -506,7 +675,7 @@ std::size_t EmbreeScene::treeNodeCount() const noexcept {
 std::size_t EmbreeScene::revolveBytes() const noexcept {
   std::size_t bytes = 0;
   for (const auto& prototype : prototypes_) {
-    bytes += prototype->normals.memoryBytes();
+    if (prototype->normals) bytes += prototype->normals->memoryBytes();
     if (prototype->shape) bytes += prototype->shape->memoryBytes();
   }
   return bytes;

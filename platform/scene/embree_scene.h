@@ -1,14 +1,19 @@
-// A scene description (io/scene_file.h) built into Embree: each distinct profile once, as a
-// revolve Shape + Geometry (or a tessellated mesh, or Embree's own linear cone curve) in a scene of its own, instanced
-// into a flat top-level scene under each object's transform; quads as top-level triangles. Hits come back in world
-// space with their object's index, a smooth shading normal, and what is needed to spawn secondary rays without
-// re-hitting the surface. Shared by the applications that trace scenes.
+// Surfaces of revolution and triangles in one Embree scene: the one scene stack of the tools and of
+// Python's RaycastingScene. Each surface of revolution is a prototype (a revolve Shape + Geometry,
+// or a tessellated mesh, or Embree's own linear cone curve, in a scene of its own) instanced into
+// a flat top-level scene under its object's placement (geometry/placement.h); triangles (a scene
+// file's quads, a Python user's meshes) are top-level triangle geometries. Hits come back in world
+// space with their object's index, a smooth shading normal, and what is needed to spawn secondary
+// rays without re-hitting the surface.
 //
-// Object ids: the instance of objects[i] is attached under geometry id i, so Embree's instID is the
-// scene's object index; the quads are one triangle geometry under id objects.size().
+// Geometry ids: every geometry, revolution or mesh, is attached under the id it was added as (0, 1,
+// ... in order), so Embree's instID (or geomID, for one attached to the top scene itself) is its
+// id. A scene file's objects[i] is geometry i, each distinct profile built once; its quads are one
+// triangle geometry under id objects.size(), quad q its triangles 2q and 2q + 1.
 #pragma once
 
 #include "embree/embree_handles.h"
+#include "geometry/placement.h"
 #include "io/scene_file.h"
 
 #include <revolve/revolve.h>
@@ -22,6 +27,7 @@
 
 namespace revolve::scene {
 
+// How a scene file's profiles are built (the tools' --geometry and the MIBIT switches).
 struct BuildSettings {
   bool mesh = false;  // tessellate every profile instead of tracing it exactly
   // Trace every profile as Embree's linear cone curve instead (ConeCurveGeometry); the scene is
@@ -34,13 +40,23 @@ struct BuildSettings {
   bool countStats = false;    // MIBIT counters (slower); read with EmbreeScene::stats()
 };
 
+// How the top-level scene is laid out, for a scene built geometry by geometry.
+struct Layout {
+  // RTC_SCENE_FLAG_ROBUST on the top scene: watertight triangles (a ray through the edge two
+  // triangles share does not slip between them), as Open3D's RaycastingScene asks of Embree.
+  bool robust = false;
+  // A surface of revolution placed by the identity is attached to the top scene itself rather than
+  // instanced: an instance costs each ray a second traversal and two transforms.
+  bool identityUninstanced = false;
+};
+
 struct WorldHit {
   float t = 0;
   Vec3 point{};            // world position of the hit
   Vec3 geometricNormal{};  // world, unit; the surface's own side (not flipped towards the ray)
   Vec3 shadingNormal{};    // world, unit, on the geometric normal's side
   std::uint32_t material = 0;
-  std::uint32_t object = 0;  // index into objects, or objects.size() + quad index
+  std::uint32_t object = 0;  // the geometry id, or for a scene file's quads objects.size() + quad index
   // For spawning rays (EmbreeScene::spawn): the world ray and, for exact surfaces, the extra
   // error of the instance transform; for triangles, the point's per-axis error bound.
   bool exactSurface = false;
@@ -53,17 +69,56 @@ struct WorldHit {
 // surface parameters WorldHit carries.
 struct RangeHit {
   float t = 0;
-  std::uint32_t object = 0;  // index into objects, or objects.size() + quad index
+  std::uint32_t object = 0;  // as WorldHit::object
+};
+
+// A triangle mesh as added: 3 floats a vertex (and one more at the end: Embree reads a vertex as
+// 16 bytes), 3 vertex indices a triangle, shared with Embree.
+struct TriangleMesh {
+  std::vector<float> vertices;
+  std::vector<std::uint32_t> triangles;
+  std::vector<std::uint32_t> quadMaterials;  // a scene file's quads: one material a pair of triangles
+  std::size_t vertexCount() const { return (vertices.size() - 1) / 3; }
+  std::size_t triangleCount() const { return triangles.size() / 3; }
 };
 
 class EmbreeScene {
  public:
+  // A scene file's objects and quads, built and committed. Throws std::runtime_error naming the
+  // object that cannot be built.
   EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings);
+  // An empty scene: geometries are added one by one, and the scene committed before it is traced.
+  explicit EmbreeScene(const Layout& layout);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  // Rays that break Embree's contract (common/ray_limits.h) are not traced: they miss, and are
+  // Adds a surface of revolution traced exactly, placed by `placement`; returns its geometry id.
+  // Not thread-safe: no query may run meanwhile.
+  std::uint32_t addRevolution(Shape shape, const app::Placement& placement, std::uint32_t material = 0);
+  // Adds a triangle mesh whose indices the caller has checked against its vertices; returns its
+  // geometry id. Not thread-safe, as addRevolution.
+  std::uint32_t addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles);
+  // Builds Embree's tree over what was added; needed after an addition, before any query. Throws
+  // std::runtime_error when Embree fails.
+  void commit();
+
+  std::size_t geometryCount() const noexcept { return geometries_.size(); }
+  // Geometry `id` (< geometryCount()): the surface of revolution's shape and placement (nullptr
+  // for a mesh or for a profile built as a mesh or cone curve), or the mesh (nullptr otherwise).
+  const Shape* shapeOf(std::uint32_t id) const noexcept;
+  const app::Placement& placementOf(std::uint32_t id) const noexcept;  // the identity for a mesh
+  const TriangleMesh* meshOf(std::uint32_t id) const noexcept;
+  // Whether `id` is attached to the top scene itself (a mesh; an identity under Layout::identityUninstanced).
+  bool uninstanced(std::uint32_t id) const noexcept;
+  RTCScene handle() const noexcept { return top_.get(); }
+
+  // Every geometry again, each with `filter` as its intersect filter, in a top scene of their own
+  // (rebuilt after an addition, the same filter each time): what a query that sees every crossing
+  // traces (Python's count_intersections). Not thread-safe, as addRevolution.
+  RTCScene filteredScene(RTCFilterFunctionN filter);
+
+  // Rays that break Embree's contract (geometry/ray_limits.h) are not traced: they miss, and are
   // counted by refusedRays(). The readers' limits keep every ray a tool makes within it, so a
   // tool reports a non-zero count as a fault rather than let Embree abort the process.
   //
@@ -93,6 +148,7 @@ class EmbreeScene {
   // and the linear scan have none): the paper's denominator for "percent of nodes traversed".
   std::size_t treeNodeCount() const noexcept;
   std::size_t revolveBytes() const noexcept;  // Shapes and shading normals
+  std::size_t meshBytes() const noexcept;     // the triangle meshes' arrays
   std::int64_t embreeBytes() const noexcept;  // Embree's own allocations now (its memory monitor)
   std::int64_t embreePeakBytes() const noexcept;
   double buildSeconds() const noexcept { return buildSeconds_; }
@@ -102,23 +158,36 @@ class EmbreeScene {
   struct Instance;
 
  private:
-  std::optional<WorldHit> instanceHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
-  std::optional<WorldHit> quadHit(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+  struct Geometry {
+    bool mesh = false;
+    std::uint32_t index = 0;  // into instances_ or meshes_
+  };
+  struct MemoryCounter {
+    std::atomic<std::int64_t> current{0}, peak{0};
+  };
+
+  EmbreeScene(const Layout& layout, bool unitDirections);
+  // Places prototype `prototype` (built already) as a new geometry; returns its id.
+  std::uint32_t addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material);
+  std::uint32_t addMesh(TriangleMesh mesh);
+  std::optional<WorldHit> hitOf(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+  std::uint32_t objectOf(const RTCHit& hit) const noexcept;
+  std::optional<WorldHit> instanceHit(const Instance& instance, const Ray& ray, const RTCRayHit& rayHit) const noexcept;
+  std::optional<WorldHit> triangleHit(std::uint32_t id, const Ray& ray, const RTCRayHit& rayHit) const noexcept;
   // The packet of rays[i] set up and traced: lanes that are not traced come back without a hit
   // (geomID invalid); lengths[i] is what the lane's t is to be divided by (unit directions).
   void tracePacket(std::span<const Ray> rays, RTCRayHit8& packet, float (&lengths)[kPacketRays]) const noexcept;
 
-  struct MemoryCounter {
-    std::atomic<std::int64_t> current{0}, peak{0};
-  };
   std::unique_ptr<MemoryCounter> memory_;  // outlives the device, which reports to it
   std::unique_ptr<std::atomic<std::uint64_t>> refused_ = std::make_unique<std::atomic<std::uint64_t>>(0);
   app::Device device_;
+  Layout layout_;
   std::vector<std::unique_ptr<Prototype>> prototypes_;
   std::vector<Instance> instances_;
-  std::vector<Vec3> quadVertices_;  // 4 per quad, world space
-  std::vector<std::uint32_t> quadMaterials_;
-  app::Scene top_;
+  std::vector<TriangleMesh> meshes_;
+  std::vector<Geometry> geometries_;  // by id
+  app::Scene top_, filtered_;
+  bool filteredCurrent_ = false;
   double buildSeconds_ = 0;
   bool unitDirections_ = false;  // Embree's cone curves need them
 };

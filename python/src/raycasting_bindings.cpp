@@ -3,12 +3,12 @@
 // while the queries run.
 #include "bindings.h"
 #include "numpy_inputs.h"
-#include "query_limits.h"
 #include "raycasting_scene.h"
 
+#include "geometry/placement.h"
+#include "geometry/ray_limits.h"
 #include "io/scene_file.h"
 #include "scene/degenerate_objects.h"
-#include "geometry/transform.h"
 
 #include <pybind11/stl.h>
 
@@ -26,7 +26,8 @@ using Scene = RaycastingScene;
 // Throws the ValueError for a refused ray or point.
 void refuse(const QueryArray& in, const char* name, std::size_t index, bool rays) {
   const float* item = in.data + (rays ? 6 : 3) * index;
-  throw py::value_error(indexText(name, in.leadingShape, index) + ": " + (rays ? rayFault(item) : pointFault(item)));
+  throw py::value_error(indexText(name, in.leadingShape, index) + ": " +
+                        (rays ? app::queryRayFault(item) : app::queryPointFault(item)));
 }
 
 Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toleranceObject) {
@@ -68,11 +69,28 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
   }
 }
 
-Placement placementFrom(py::handle transform, const Shape& shape) {
+// The placement a 4x4 matrix gives, held to the placement rule and the coordinate limit (the
+// shape's box placed, geometry/placement.h); `name` names it in messages.
+app::Placement placementOf(const double rows[16], const Shape& shape, const char* name) {
+  try {
+    const app::Placement placement = app::Placement::fromRows(rows, name);
+    const Bounds box = shape.bounds();
+    const double reach =
+        placement.reach({box.lower.x, box.lower.y, box.lower.z}, {box.upper.x, box.upper.y, box.upper.z});
+    if (const std::optional<std::string> fault = app::reachFault(reach)) {
+      throw app::PlacementError(std::string(name) + ": " + *fault);
+    }
+    return placement;
+  } catch (const app::PlacementError& error) {
+    throw py::value_error(error.what());
+  }
+}
+
+app::Placement placementFrom(py::handle transform, const Shape& shape) {
   static const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  if (transform.is_none()) return placementOf(identity, shape);
+  if (transform.is_none()) return placementOf(identity, shape, "transform");
   const py::array_t<double> matrix = copiedMatrix(transform, "transform", 4, 4);
-  return placementOf(matrix.data(), shape);
+  return placementOf(matrix.data(), shape, "transform");
 }
 
 std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle trianglesObject) {
@@ -101,9 +119,8 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
   for (py::ssize_t i = 0; i < vertices.size(); ++i) {
     const double x = vertices.data()[i];
     if (!(std::abs(x) <= app::kMaxWorldCoordinate)) {
-      throw py::value_error("vertex_positions[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +
-                            "] = " + std::to_string(x) +
-                            " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+      throw py::value_error("vertex_positions[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) + "] = " +
+                            std::to_string(x) + " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
     }
     positions[std::size_t(i)] = float(x);
   }
@@ -126,25 +143,23 @@ std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
   const io::SceneDescription description = io::readScene(path);
   for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
   warnAbout(scene::degenerateObjectWarnings(description, false));
-  // Every object placed before any is added: a refused one leaves the scene as it was.
-  std::vector<std::pair<Shape, Placement>> placed;
+  // Every object placed before any is added: a refused one leaves the scene as it was. Each by the
+  // 4x4 of its transform, as add_revolution places a shape.
+  std::vector<std::pair<Shape, app::Placement>> placed;
   for (std::size_t i = 0; i < description.objects.size(); ++i) {
     const io::SceneObject& object = description.objects[i];
     const io::SceneProfile& profile = description.profiles[object.profile];
     Shape shape = profile.spline ? Shape(*profile.spline) : Shape(profile.profile);
-    const scene::Matrix3d linear = scene::linearPart(object.transform);
+    const app::Matrix3d linear = app::linearPart(object.transform);
     double rows[16] = {};
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) rows[4 * r + c] = linear[r][c];
       rows[4 * r + 3] = object.transform.translate[r];
     }
     rows[15] = 1;
-    try {
-      const Placement placement = placementOf(rows, shape);
-      placed.emplace_back(std::move(shape), placement);
-    } catch (const std::invalid_argument& error) {
-      throw py::value_error(path + ": objects[" + std::to_string(i) + "]: " + error.what());
-    }
+    const std::string name = path + ": objects[" + std::to_string(i) + "]'s transform";
+    const app::Placement placement = placementOf(rows, shape, name.c_str());
+    placed.emplace_back(std::move(shape), placement);
   }
   std::vector<std::uint32_t> ids;
   for (auto& [shape, placement] : placed) ids.push_back(scene.addRevolution(std::move(shape), placement));
@@ -152,7 +167,7 @@ std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
     std::vector<float> vertices;
     std::vector<std::uint32_t> triangles;
     for (std::size_t q = 0; q < description.quads.size(); ++q) {
-      for (const io::Vec3d& corner : description.quads[q].corners) {
+      for (const app::Vec3d& corner : description.quads[q].corners) {
         for (const double x : corner) vertices.push_back(float(x));
       }
       const auto base = std::uint32_t(4 * q);
@@ -222,18 +237,17 @@ struct ClosestArrays {
 
 ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, bool signedDistance, int threads) {
   const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
-  std::string limitation = scene.distanceLimitation();
-  if (limitation.empty() && signedDistance) limitation = scene.solidLimitation();
-  if (!limitation.empty()) throw py::value_error(std::string(method) + ": " + limitation);
   ClosestArrays a{newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape, 2),
                   newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape),
                   newArray<std::uint32_t>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape)};
   const Scene::Closest out{a.points.mutable_data(), a.geometry.mutable_data(), a.primitive.mutable_data(),
                            a.uv.mutable_data(),     a.normal.mutable_data(),   a.distance.mutable_data()};
   std::optional<std::size_t> refused;
-  {
+  try {
     py::gil_scoped_release release;
     refused = scene.closestPoints(in.data, in.count, out, signedDistance, threads);
+  } catch (const std::invalid_argument& limitation) {  // what this scene cannot answer exactly
+    throw py::value_error(std::string(method) + ": " + limitation.what());
   }
   if (refused) refuse(in, "query_points", *refused, false);
   return a;
@@ -241,15 +255,14 @@ ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, 
 
 py::array occupancy(Scene& scene, py::handle queryPoints, int threads) {
   const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
-  if (const std::string limitation = scene.solidLimitation(); !limitation.empty()) {
-    throw py::value_error("compute_occupancy: " + limitation);
-  }
   auto inside = newArray<float>(in.leadingShape);
   float* out = inside.mutable_data();
   std::optional<std::size_t> refused;
-  {
+  try {
     py::gil_scoped_release release;
     refused = scene.occupancy(in.data, in.count, out, threads);
+  } catch (const std::invalid_argument& limitation) {  // what this scene cannot answer exactly
+    throw py::value_error(std::string("compute_occupancy: ") + limitation.what());
   }
   if (refused) refuse(in, "query_points", *refused, false);
   return inside;
@@ -275,7 +288,7 @@ direction), query points float32 (..., 3), both C-contiguous (read in place). Ge
       "add_revolution",
       [](Scene& s, py::handle points, py::handle transform, py::handle spline, py::handle tolerance) {
         Shape shape = shapeOf(points, spline, tolerance);
-        const Placement placement = placementFrom(transform, shape);
+        const app::Placement placement = placementFrom(transform, shape);
         return s.addRevolution(std::move(shape), placement);
       },
       py::arg("points"), py::arg("transform") = py::none(), py::arg("spline") = py::none(),

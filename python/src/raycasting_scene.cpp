@@ -1,11 +1,10 @@
 #include "raycasting_scene.h"
 
-#include "query_limits.h"
-#include "solid_inside.h"
+#include "geometry/ray_limits.h"
+#include "threads/thread_arenas.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -16,26 +15,6 @@
 #include <stdexcept>
 
 namespace revolve::python {
-
-struct RaycastingScene::Revolution {
-  Shape shape;
-  Placement placement;
-  // The shape alone, instanced under the geometry's id; none when it stays where it is (the
-  // identity), attached to the top scene itself: an instance costs each ray a second traversal
-  // and two transforms.
-  app::Scene prototype;
-  std::optional<Geometry> geometry;
-  // The same shape with a filter counting every crossing (count_intersections), built on first use,
-  // attached the same way.
-  app::Scene countingPrototype;
-  std::optional<Geometry> countingGeometry;
-};
-
-struct RaycastingScene::Mesh {
-  std::vector<float> vertices;  // 3 a vertex, and one more float: Embree reads a vertex as 16 bytes
-  std::vector<std::uint32_t> triangles;
-  std::size_t vertexCount = 0, triangleCount = 0;
-};
 
 namespace {
 
@@ -70,11 +49,10 @@ void countCrossing(const RTCFilterFunctionNArguments* args) {
   }
 }
 
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3d minus(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+using app::cross;
+using app::dot;
+using app::minus;
+using app::Vec3d;
 
 // The closest point so far of a point query, in double.
 struct Candidate {
@@ -85,8 +63,7 @@ struct Candidate {
 };
 
 struct PointQuery {
-  const std::vector<std::unique_ptr<RaycastingScene::Revolution>>* revolutions;
-  const std::vector<std::unique_ptr<RaycastingScene::Mesh>>* meshes;
+  const scene::EmbreeScene* scene;
   Vec3d query{};
   Candidate best;
 };
@@ -116,7 +93,7 @@ std::pair<double, double> closestOnTriangle(const Vec3d& p, const Vec3d& a, cons
   return {vb * denominator, vc * denominator};
 }
 
-void offerTriangle(PointQuery& q, const RaycastingScene::Mesh& mesh, unsigned id, unsigned primitive) {
+void offerTriangle(PointQuery& q, const scene::TriangleMesh& mesh, unsigned id, unsigned primitive) {
   const auto vertex = [&](int k) {
     const float* v = mesh.vertices.data() + 3 * std::size_t(mesh.triangles[3 * std::size_t(primitive) + k]);
     return Vec3d{v[0], v[1], v[2]};
@@ -134,15 +111,15 @@ void offerTriangle(PointQuery& q, const RaycastingScene::Mesh& mesh, unsigned id
   q.best = {distance, p, {n[0] / length, n[1] / length, n[2] / length}, u, v, id, primitive};
 }
 
-void offerRevolution(PointQuery& q, const RaycastingScene::Revolution& g, unsigned id) {
-  const Vec3d local = g.placement.toObject(q.query);
+void offerRevolution(PointQuery& q, const Shape& shape, const app::Placement& placement, unsigned id) {
+  const Vec3d local = placement.toObject(q.query);
   const double rho = std::hypot(local[0], local[1]);
-  const MeridianPoint m = closestMeridianPoint(g.shape, {rho, local[2]});
-  const double distance = m.distance * g.placement.similarity;
+  const MeridianPoint m = closestMeridianPoint(shape, {rho, local[2]});
+  const double distance = m.distance * placement.similarity();
   if (!(distance < q.best.distance)) return;
   // The meridian half-plane of the query (any, on the axis).
   const double cx = rho > 0 ? local[0] / rho : 1, cy = rho > 0 ? local[1] / rho : 0;
-  const std::span<const Point2> points = g.shape.profile().points();
+  const std::span<const Point2> points = shape.profile().points();
   const Point2 a = points[m.segment], b = points[m.segment + 1];
   const double er = b.r - a.r, ez = b.z - a.z, chord = std::hypot(er, ez);
   // The normal: along the way to the query when it lies off the surface (exact wherever the surface
@@ -155,11 +132,11 @@ void offerRevolution(PointQuery& q, const RaycastingScene::Revolution& g, unsign
     nr = wr, nz = wz;
   }
   const double along = std::clamp(((m.point.r - a.r) * er + (m.point.z - a.z) * ez) / (chord * chord), 0.0, 1.0);
-  const std::span<const double> arc = g.shape.profile().arcLength();
+  const std::span<const double> arc = shape.profile().arcLength();
   const double turns = std::atan2(local[1], local[0]) * (0.5 / std::numbers::pi);
   q.best.distance = distance;
-  q.best.point = g.placement.toWorld({m.point.r * cx, m.point.r * cy, m.point.z});
-  q.best.normal = g.placement.normalToWorld({nr * cx, nr * cy, nz});
+  q.best.point = placement.toWorld({m.point.r * cx, m.point.r * cy, m.point.z});
+  q.best.normal = placement.normalToWorld({nr * cx, nr * cy, nz});
   q.best.u = turns < 0 ? turns + 1 : turns;
   q.best.v = (arc[m.segment] + along * (arc[m.segment + 1] - arc[m.segment])) / arc.back();
   q.best.geometry = id;
@@ -170,40 +147,15 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
   auto& q = *static_cast<PointQuery*>(args->userPtr);
   const double before = q.best.distance;
   const unsigned id = args->context->instStackSize > 0 ? args->context->instID[0] : args->geomID;
-  if (const RaycastingScene::Revolution* revolution = (*q.revolutions)[id].get()) {
-    offerRevolution(q, *revolution, id);
+  if (const Shape* shape = q.scene->shapeOf(id)) {
+    offerRevolution(q, *shape, q.scene->placementOf(id), id);
   } else {
-    offerTriangle(q, *(*q.meshes)[id], id, args->primID);
+    offerTriangle(q, *q.scene->meshOf(id), id, args->primID);
   }
   if (!(q.best.distance < before)) return false;
   // The radius shrinks to the best distance, rounded up so that it never excludes the best.
   args->query->radius = std::nextafter(float(q.best.distance), kInfinity);
   return true;
-}
-
-bool isIdentity(const Placement& p) {
-  const Matrix3d identity{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-  return p.linear == identity && p.translate == Vec3d{0, 0, 0};
-}
-
-// Attaches `geometry` to `scene` under `id`: itself, or through an instance of `prototype` (made
-// here) under a placement other than the identity.
-void attach(RTCDevice device, RTCScene scene, const Geometry& geometry, app::Scene& prototype,
-            const Placement& placement, unsigned id) {
-  if (isIdentity(placement)) {
-    rtcAttachGeometryByID(scene, geometry.handle(), id);
-    return;
-  }
-  prototype = app::newScene(device);
-  rtcAttachGeometry(prototype.get(), geometry.handle());
-  rtcCommitScene(prototype.get());
-  RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
-  rtcSetGeometryInstancedScene(instance, prototype.get());
-  const std::array<float, 12> columns = placement.embreeColumns();
-  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
-  rtcCommitGeometry(instance);
-  rtcAttachGeometryByID(scene, instance, id);
-  rtcReleaseGeometry(instance);
 }
 
 void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
@@ -213,143 +165,65 @@ void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
 
 }  // namespace
 
-RaycastingScene::RaycastingScene() : device_(app::newDevice()), top_(app::newScene(device_.get())) {
-  rtcSetDeviceMemoryMonitorFunction(
-      device_.get(),
-      [](void* user, ssize_t bytes, bool) {
-        static_cast<std::atomic<std::int64_t>*>(user)->fetch_add(bytes, std::memory_order_relaxed);
-        return true;
-      },
-      embreeBytes_.get());
-  // Watertight triangles, as Open3D's RaycastingScene asks of Embree (a ray through a mesh's edge
-  // does not slip between its triangles).
-  rtcSetSceneFlags(top_.get(), RTC_SCENE_FLAG_ROBUST);
-}
+RaycastingScene::RaycastingScene() : scene_(scene::Layout{.robust = true, .identityUninstanced = true}) {}
 
-RaycastingScene::~RaycastingScene() {
-  top_.reset();
-  counting_.reset();
-  revolutions_.clear();
-}
-
-std::size_t RaycastingScene::memoryBytes() const {
-  std::shared_lock lock(mutex_);
-  std::size_t bytes = std::size_t(std::max<std::int64_t>(0, embreeBytes_->load()));
-  for (const auto& g : revolutions_) bytes += g ? g->shape.memoryBytes() : 0;
-  for (const auto& m : meshes_)
-    bytes += m ? m->vertices.capacity() * sizeof(float) + m->triangles.capacity() * sizeof(std::uint32_t) : 0;
-  return bytes;
-}
-
-std::size_t RaycastingScene::geometryCount() const {
-  std::shared_lock lock(mutex_);
-  return revolutions_.size();
-}
-
-std::uint32_t RaycastingScene::addRevolution(Shape shape, const Placement& placement) {
+std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& placement) {
   std::unique_lock lock(mutex_);
-  if (revolutions_.size() >= kInvalidId) throw std::length_error("a scene holds at most 2^32 - 1 geometries");
-  const auto id = std::uint32_t(revolutions_.size());
-  auto g = std::make_unique<Revolution>(
-      Revolution{std::move(shape), placement, nullptr, std::nullopt, nullptr, std::nullopt});
-  g->geometry.emplace(device_.get(), g->shape);
-  attach(device_.get(), top_.get(), *g->geometry, g->prototype, g->placement, id);
-  revolutions_.push_back(std::move(g));
-  meshes_.push_back(nullptr);
+  const std::uint32_t id = scene_.addRevolution(std::move(shape), placement);
   committed_ = false;
-  counting_.reset();
-  countingBuilt_ = false;
+  countingCurrent_ = false;
   return id;
 }
 
 std::uint32_t RaycastingScene::addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles) {
   std::unique_lock lock(mutex_);
-  if (revolutions_.size() >= kInvalidId) throw std::length_error("a scene holds at most 2^32 - 1 geometries");
-  const auto id = std::uint32_t(revolutions_.size());
-  auto mesh = std::make_unique<Mesh>();
-  mesh->vertices.assign(vertices.begin(), vertices.end());
-  mesh->vertices.push_back(0);
-  mesh->triangles.assign(triangles.begin(), triangles.end());
-  mesh->vertexCount = vertices.size() / 3;
-  mesh->triangleCount = triangles.size() / 3;
-  RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh->vertices.data(), 0,
-                             3 * sizeof(float), mesh->vertexCount);
-  rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh->triangles.data(), 0,
-                             3 * sizeof(std::uint32_t), mesh->triangleCount);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(top_.get(), geometry, id);
-  rtcReleaseGeometry(geometry);
-  revolutions_.push_back(nullptr);
-  meshes_.push_back(std::move(mesh));
+  const std::uint32_t id = scene_.addTriangles(vertices, triangles);
   committed_ = false;
-  counting_.reset();
-  countingBuilt_ = false;
+  countingCurrent_ = false;
   return id;
 }
 
-void RaycastingScene::commitIfChanged() {
-  {
-    std::shared_lock lock(mutex_);
-    if (committed_) return;
-  }
-  std::unique_lock lock(mutex_);
-  if (committed_) return;
-  rtcCommitScene(top_.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
-  committed_ = true;
+std::size_t RaycastingScene::geometryCount() const {
+  std::shared_lock lock(mutex_);
+  return scene_.geometryCount();
 }
 
-void RaycastingScene::buildCountingScene() {
-  {
-    std::shared_lock lock(mutex_);
-    if (countingBuilt_) return;
-  }
-  std::unique_lock lock(mutex_);
-  if (countingBuilt_) return;
-  app::Scene counting = app::newScene(device_.get());
-  rtcSetSceneFlags(counting.get(), RTC_SCENE_FLAG_ROBUST);
-  for (std::size_t id = 0; id < revolutions_.size(); ++id) {
-    if (Revolution* g = revolutions_[id].get()) {
-      if (!g->countingGeometry) {
-        g->countingGeometry.emplace(device_.get(), g->shape);
-        g->countingGeometry->setIntersectFilter(countCrossing);
-        rtcCommitGeometry(g->countingGeometry->handle());
-      }
-      g->countingPrototype.reset();
-      attach(device_.get(), counting.get(), *g->countingGeometry, g->countingPrototype, g->placement, unsigned(id));
-    } else {
-      const Mesh& mesh = *meshes_[id];
-      RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-      rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, mesh.vertices.data(), 0,
-                                 3 * sizeof(float), mesh.vertexCount);
-      rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, mesh.triangles.data(), 0,
-                                 3 * sizeof(std::uint32_t), mesh.triangleCount);
-      rtcSetGeometryIntersectFilterFunction(geometry, countCrossing);
-      rtcCommitGeometry(geometry);
-      rtcAttachGeometryByID(counting.get(), geometry, unsigned(id));
-      rtcReleaseGeometry(geometry);
+std::size_t RaycastingScene::memoryBytes() const {
+  std::shared_lock lock(mutex_);
+  return std::size_t(std::max<std::int64_t>(0, scene_.embreeBytes())) + scene_.revolveBytes() + scene_.meshBytes();
+}
+
+RaycastingScene::QueryLock RaycastingScene::readyForQueries(bool counting) {
+  for (;;) {
+    QueryLock shared(mutex_);
+    if (committed_ && (!counting || countingCurrent_)) return shared;
+    shared.unlock();
+    // Commit (and build the counting copy) alone; then take the shared lock again and look once more,
+    // since an addition may have come in between.
+    std::unique_lock exclusive(mutex_);
+    if (!committed_) {
+      scene_.commit();
+      committed_ = true;
+    }
+    if (counting && !countingCurrent_) {
+      counting_ = scene_.filteredScene(countCrossing);
+      countingCurrent_ = true;
     }
   }
-  rtcCommitScene(counting.get());
-  if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
-  counting_ = std::move(counting);
-  countingBuilt_ = true;
 }
 
 template <class Body>
-std::optional<std::size_t> RaycastingScene::forEach(const float* items, std::size_t count, std::size_t width, bool rays,
-                                                    int threads, Body body) {
+std::optional<std::size_t> RaycastingScene::forEach(const float* items, std::size_t count, bool rays, int threads,
+                                                    Body body) const {
   std::atomic<std::size_t> firstRefused{std::numeric_limits<std::size_t>::max()};
-  std::shared_lock lock(mutex_);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  const std::size_t width = rays ? 6 : 3;
+  app::threadArena(threads).execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         embree::RayQuery query;
                         for (std::size_t i = range.begin(); i != range.end(); ++i) {
                           const float* item = items + width * i;
-                          if (!(rays ? rayAccepted(item) : pointAccepted(item))) {
+                          if (!(rays ? app::queryRayAccepted(item) : app::queryPointAccepted(item))) {
                             recordMinimum(firstRefused, i);
                             continue;
                           }
@@ -364,9 +238,9 @@ std::optional<std::size_t> RaycastingScene::forEach(const float* items, std::siz
 
 std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::size_t count, const Hits& out,
                                                      int threads) {
-  commitIfChanged();
-  RTCScene top = top_.get();
-  return forEach(rays, count, 6, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
+  const QueryLock lock = readyForQueries(false);
+  RTCScene top = scene_.handle();
+  return forEach(rays, count, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
     RTCRayHit rh = embree::newRayHit(r[0], r[1], r[2], r[3], r[4], r[5], 0.0f, kInfinity);
     query.intersect(top, rh);
     float* uv = out.uv + 2 * i;
@@ -387,9 +261,9 @@ std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::siz
     out.geometry[i] = id;
     if (instanced) {
       // A placed revolution: its unit object-space normal carried to the world.
-      const Vec3d n = revolutions_[id]->placement.normalToWorld({rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
+      const Vec3d n = scene_.placementOf(id).normalToWorld({rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
       normal[0] = float(n[0]), normal[1] = float(n[1]), normal[2] = float(n[2]);
-    } else if (revolutions_[id]) {
+    } else if (scene_.shapeOf(id) != nullptr) {
       normal[0] = rh.hit.Ng_x, normal[1] = rh.hit.Ng_y, normal[2] = rh.hit.Ng_z;  // unit already, in the world
     } else {
       // A triangle: Embree's normal made unit length as Open3D does it, in float.
@@ -402,9 +276,9 @@ std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::siz
 
 std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, std::size_t count, float tnear,
                                                            float tfar, bool* out, int threads) {
-  commitIfChanged();
-  RTCScene top = top_.get();
-  return forEach(rays, count, 6, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
+  const QueryLock lock = readyForQueries(false);
+  RTCScene top = scene_.handle();
+  return forEach(rays, count, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
     RTCRay ray = embree::newRayHit(r[0], r[1], r[2], r[3], r[4], r[5], tnear, tfar).ray;
     query.occluded(top, ray);
     out[i] = ray.tfar == -kInfinity;
@@ -413,10 +287,9 @@ std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, st
 
 std::optional<std::size_t> RaycastingScene::countIntersections(const float* rays, std::size_t count, std::int32_t* out,
                                                                int threads) {
-  commitIfChanged();
-  buildCountingScene();
-  RTCScene counting = counting_.get();
-  return forEach(rays, count, 6, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
+  const QueryLock lock = readyForQueries(true);
+  RTCScene counting = counting_;
+  return forEach(rays, count, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
     CrossingCount tally;
     crossings = &tally;
     RTCRayHit rh = embree::newRayHit(r[0], r[1], r[2], r[3], r[4], r[5], 0.0f, kInfinity);
@@ -427,30 +300,25 @@ std::optional<std::size_t> RaycastingScene::countIntersections(const float* rays
 }
 
 std::string RaycastingScene::distanceLimitation() const {
-  std::shared_lock lock(mutex_);
-  for (std::size_t id = 0; id < revolutions_.size(); ++id) {
-    if (revolutions_[id] && revolutions_[id]->placement.similarity == 0) {
+  for (std::uint32_t id = 0; id < scene_.geometryCount(); ++id) {
+    if (scene_.shapeOf(id) != nullptr && scene_.placementOf(id).similarity() == 0) {
       return "geometry " + std::to_string(id) +
              " is placed by a transform that is not a similarity (rotation, uniform scale, translation), under which "
-             "its "
-             "distances cannot be taken exactly in its meridian plane; scale the profile's r and z instead";
+             "its distances cannot be taken exactly in its meridian plane; scale the profile's r and z instead";
     }
   }
   return "";
 }
 
 std::string RaycastingScene::solidLimitation() const {
-  std::shared_lock lock(mutex_);
-  for (std::size_t id = 0; id < revolutions_.size(); ++id) {
-    if (!revolutions_[id]) {
+  for (std::uint32_t id = 0; id < scene_.geometryCount(); ++id) {
+    const Shape* shape = scene_.shapeOf(id);
+    if (shape == nullptr) {
       return "geometry " + std::to_string(id) +
              " is a triangle mesh; revolve decides inside and outside from closed profiles only (Open3D's "
-             "RaycastingScene "
-             "votes with rays for meshes)";
+             "RaycastingScene votes with rays for meshes)";
     }
-    const Shape& shape = revolutions_[id]->shape;
-    const bool closed = shape.spline() != nullptr ? shape.spline()->closed() : shape.profile().closed();
-    if (!closed) {
+    if (!shape->closed()) {
       return "geometry " + std::to_string(id) +
              "'s profile is open (its ends neither meet nor both lie on the axis), so it bounds no solid";
     }
@@ -460,10 +328,13 @@ std::string RaycastingScene::solidLimitation() const {
 
 std::optional<std::size_t> RaycastingScene::closestPoints(const float* points, std::size_t count, const Closest& out,
                                                           bool signedDistance, int threads) {
-  commitIfChanged();
-  RTCScene top = top_.get();
-  return forEach(points, count, 3, false, threads, [&](embree::RayQuery&, std::size_t i, const float* p) {
-    PointQuery q{&revolutions_, &meshes_, {p[0], p[1], p[2]}, {}};
+  const QueryLock lock = readyForQueries(false);
+  std::string limitation = distanceLimitation();
+  if (limitation.empty() && signedDistance) limitation = solidLimitation();
+  if (!limitation.empty()) throw std::invalid_argument(limitation);
+  RTCScene top = scene_.handle();
+  return forEach(points, count, false, threads, [&](embree::RayQuery&, std::size_t i, const float* p) {
+    PointQuery q{&scene_, {p[0], p[1], p[2]}, {}};
     RTCPointQuery query{};
     query.x = p[0], query.y = p[1], query.z = p[2];
     query.radius = kInfinity;
@@ -473,15 +344,7 @@ std::optional<std::size_t> RaycastingScene::closestPoints(const float* points, s
     rtcPointQuery(top, &query, &context, pointQueryCallback, &q);
     const Candidate& best = q.best;
     double distance = best.distance;
-    if (signedDistance) {
-      for (const auto& g : revolutions_) {
-        const Vec3d local = g->placement.toObject(q.query);
-        if (insideSolid(g->shape, std::hypot(local[0], local[1]), local[2])) {
-          distance = -distance;
-          break;
-        }
-      }
-    }
+    if (signedDistance && insideAny(q.query)) distance = -distance;
     for (int k = 0; k < 3; ++k) {
       out.point[3 * i + k] = float(best.point[k]);
       out.normal[3 * i + k] = float(best.normal[k]);
@@ -494,17 +357,19 @@ std::optional<std::size_t> RaycastingScene::closestPoints(const float* points, s
   });
 }
 
+bool RaycastingScene::insideAny(const Vec3d& p) const noexcept {
+  for (std::uint32_t id = 0; id < scene_.geometryCount(); ++id) {
+    const Vec3d local = scene_.placementOf(id).toObject(p);
+    if (insideSolid(*scene_.shapeOf(id), {std::hypot(local[0], local[1]), local[2]})) return true;
+  }
+  return false;
+}
+
 std::optional<std::size_t> RaycastingScene::occupancy(const float* points, std::size_t count, float* out, int threads) {
-  return forEach(points, count, 3, false, threads, [&](embree::RayQuery&, std::size_t i, const float* p) {
-    bool inside = false;
-    for (const auto& g : revolutions_) {
-      const Vec3d local = g->placement.toObject({p[0], p[1], p[2]});
-      if (insideSolid(g->shape, std::hypot(local[0], local[1]), local[2])) {
-        inside = true;
-        break;
-      }
-    }
-    out[i] = inside ? 1.0f : 0.0f;
+  const QueryLock lock = readyForQueries(false);
+  if (const std::string limitation = solidLimitation(); !limitation.empty()) throw std::invalid_argument(limitation);
+  return forEach(points, count, false, threads, [&](embree::RayQuery&, std::size_t i, const float* p) {
+    out[i] = insideAny({p[0], p[1], p[2]}) ? 1.0f : 0.0f;
   });
 }
 

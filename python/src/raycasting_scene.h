@@ -3,26 +3,24 @@
 // Embree scene; every query runs over an array of rays or points on TBB's threads. Plain C++
 // over raw arrays; raycasting_bindings.cpp binds it to numpy with Open3D's names and layouts.
 //
-// Geometry ids count 0, 1, ... in the order geometries are added, as Open3D's do. A revolution is
-// a one-shape Embree scene instanced into the top scene under its id (Embree's instID); a mesh is
-// attached to the top scene itself under its id (Embree's geomID).
+// The scene is the tools' (platform/scene/embree_scene.h: the same placements, limits and Embree
+// layout), laid out as Open3D's: watertight triangles, and a revolution placed by the identity
+// attached to the top scene itself. What is Python's alone is on top: the queries over arrays, the
+// crossing count, closest points over meshes and revolutions, and the lock that lets queries and
+// additions come from any thread.
 #pragma once
 
-#include "placement.h"
-
-#include "embree/embree_handles.h"
+#include "geometry/placement.h"
+#include "scene/embree_scene.h"
 
 #include <revolve/revolve.h>
 
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <shared_mutex>
 #include <span>
 #include <string>
-#include <vector>
 
 namespace revolve::python {
 
@@ -31,12 +29,10 @@ class RaycastingScene {
   static constexpr std::uint32_t kInvalidId = RTC_INVALID_GEOMETRY_ID;
 
   RaycastingScene();
-  ~RaycastingScene();
-  RaycastingScene(const RaycastingScene&) = delete;
-  RaycastingScene& operator=(const RaycastingScene&) = delete;
 
-  // The new geometry's id.
-  std::uint32_t addRevolution(Shape shape, const Placement& placement);
+  // Additions are thread-safe: each waits for the queries running to finish, and queries started
+  // meanwhile wait for it. The new geometry's id.
+  std::uint32_t addRevolution(Shape shape, const app::Placement& placement);
   // 3 floats a vertex, 3 indices a triangle; the caller has checked the indices against the
   // vertex count and the vertices against the coordinate limit.
   std::uint32_t addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles);
@@ -46,15 +42,15 @@ class RaycastingScene {
   std::size_t memoryBytes() const;
 
   // Every query reads `count` rays (ox, oy, oz, dx, dy, dz) or points (x, y, z), refuses those
-  // query_limits.h refuses (without tracing them), and returns the index of the first refused,
-  // or nothing. `threads` 0 means all. Thread-safe; the geometry may not change meanwhile (a
-  // call that adds one waits).
+  // geometry/ray_limits.h refuses for queries (without tracing them), and returns the index of the
+  // first refused, or nothing. `threads` 0 means all (checked by the caller: 0 to kMaxThreads).
+  // Thread-safe, against each other and against additions.
   struct Hits {
-    float* t;                 // inf on a miss
-    std::uint32_t* geometry;  // kInvalidId on a miss
-    std::uint32_t* primitive;
-    float* uv;      // 2 a ray
-    float* normal;  // 3 a ray: unit, world space, the surface's own side (not turned to the ray)
+    float* t;                  // inf on a miss
+    std::uint32_t* geometry;   // kInvalidId on a miss
+    std::uint32_t* primitive;  // kInvalidId on a miss
+    float* uv;                 // 2 a ray
+    float* normal;             // 3 a ray: unit, world space, the surface's own side (not turned to the ray)
   };
   std::optional<std::size_t> castRays(const float* rays, std::size_t count, const Hits& out, int threads);
   std::optional<std::size_t> testOcclusions(const float* rays, std::size_t count, float tnear, float tfar, bool* out,
@@ -72,36 +68,31 @@ class RaycastingScene {
     float* distance;  // 1 a point; negative inside a solid when signed
   };
   // Exact closest surface points, distances in double rounded once. `signedDistance`: negative
-  // inside any closed revolution (solid_inside.h). Precondition: distanceLimitation() (and for
-  // signed, solidLimitation()) empty.
+  // inside any closed revolution (revolve::insideSolid). Throws std::invalid_argument with
+  // distanceLimitation() (and for signed, solidLimitation()) when it is not empty.
   std::optional<std::size_t> closestPoints(const float* points, std::size_t count, const Closest& out,
                                            bool signedDistance, int threads);
-  // Inside (1) or outside (0) the union of the closed revolutions. Precondition: solidLimitation() empty.
+  // Inside (1) or outside (0) the union of the closed revolutions. Throws std::invalid_argument with
+  // solidLimitation() when it is not empty.
   std::optional<std::size_t> occupancy(const float* points, std::size_t count, float* out, int threads);
 
-  // Why distances cannot be exact here (a revolution placed by other than a similarity), or empty.
-  std::string distanceLimitation() const;
-  // Why inside cannot be decided here (a mesh, an open profile), or empty.
-  std::string solidLimitation() const;
-
-  struct Revolution;
-  struct Mesh;
-
  private:
-  void commitIfChanged();
-  void buildCountingScene();
+  using QueryLock = std::shared_lock<std::shared_mutex>;
+  // The shared lock a query holds while it runs, taken once the scene is committed (and, with
+  // `counting`, its crossing-counting copy built): everything it reads stays as it is until it ends.
+  QueryLock readyForQueries(bool counting);
+  // Why distances (or the inside) cannot be exact here, or empty; under the caller's lock.
+  std::string distanceLimitation() const;
+  std::string solidLimitation() const;
+  // Whether world point p lies inside any revolution's solid (all closed: solidLimitation() empty).
+  bool insideAny(const app::Vec3d& p) const noexcept;
   template <class Body>
-  std::optional<std::size_t> forEach(const float* items, std::size_t count, std::size_t width, bool rays, int threads,
-                                     Body body);
+  std::optional<std::size_t> forEach(const float* items, std::size_t count, bool rays, int threads, Body body) const;
 
-  std::unique_ptr<std::atomic<std::int64_t>> embreeBytes_ =
-      std::make_unique<std::atomic<std::int64_t>>(0);  // outlives the device
-  app::Device device_;
-  app::Scene top_, counting_;
-  std::vector<std::unique_ptr<Revolution>> revolutions_;  // by id; nullptr for meshes
-  std::vector<std::unique_ptr<Mesh>> meshes_;             // by id; nullptr for revolutions
-  bool committed_ = false, countingBuilt_ = false;
-  mutable std::shared_mutex mutex_;  // shared: queries; exclusive: changes and commits
+  scene::EmbreeScene scene_;
+  RTCScene counting_ = nullptr;  // scene_.filteredScene(): every crossing counted
+  bool committed_ = false, countingCurrent_ = false;
+  mutable std::shared_mutex mutex_;  // shared: queries; exclusive: additions, commits, the counting copy
 };
 
 }  // namespace revolve::python

@@ -15,10 +15,10 @@
 #include "robot/lidar.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
+#include "threads/thread_arenas.h"
 
 #include <pybind11/stl.h>
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <cstdio>
@@ -97,7 +97,7 @@ std::vector<io::RobotPose> posesOf(py::handle poses) {
         char text[32];
         std::snprintf(text, sizeof text, "%.9g", values.at(i, c));
         throw py::value_error("poses[" + std::to_string(i) + ", " + std::to_string(c) + "]: " + names[c] + " = " +
-                              text + " lies beyond the coordinate limit: positions lie within +-2^40 (1.1e12)");
+                              text + " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
       }
     }
     io::RobotPose& p = result[i];
@@ -270,8 +270,7 @@ py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, doubl
   std::vector<robot::SceneClearance> results(poses.size());
   {
     py::gil_scoped_release release;
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute([&] {
+    app::threadArena(threads).execute([&] {
       tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t i) {
         const io::RobotPose& p = poses[i];
         results[i] = map.query({p.x, p.y, p.z + zMin, p.z + zMax, radius});

@@ -128,13 +128,14 @@ def test_transforms_are_refused_naming_the_entry_and_the_rule():
     projective[3, 0] = 0.5
     with pytest.raises(ValueError, match=r"transform's last row is \(0.5, 0, 0, 1\); a placement is affine"):
         s.add_revolution(profile, transform=projective)
-    with pytest.raises(ValueError, match=r"scale factors must lie in \[2\^-16, 2\^40\]"):
+    with pytest.raises(ValueError, match=r"transform's 3x3 part scales by 1e-06 \(its smallest singular value\): "
+                                         r"scale factors lie in \[2\^-16, 2\^40\]"):
         s.add_revolution(profile, transform=np.diag([1e-6, 1, 1, 1]))
-    with pytest.raises(ValueError, match=r"scale factors must lie"):
+    with pytest.raises(ValueError, match=r"transform's 3x3 part is singular \(a scale factor of 0\): scale factors lie"):
         s.add_revolution(profile, transform=np.diag([0, 1, 1, 1]))
     far = np.eye(4)
     far[0, 3] = 2e12
-    with pytest.raises(ValueError, match=r"the placed shape reaches 2e\+12, beyond the coordinate limit"):
+    with pytest.raises(ValueError, match=r"transform: the placed object reaches 2e\+12, beyond the coordinate limit"):
         s.add_revolution(profile, transform=far)
     with pytest.raises(ValueError, match=r"transform: shape \(3, 3\); expected \(4, 4\)"):
         s.add_revolution(profile, transform=np.eye(3))

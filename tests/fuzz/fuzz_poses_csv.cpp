@@ -2,8 +2,8 @@
 // an InputError with a one-line message, or at least one pose, every value finite, x, y and z
 // within the coordinate limit (common/ray_limits.h), z = 0 where the file gave none; the poses, written back as
 // shortest round-trip text under the x,y,z,yaw header, read back bit for bit.
-#include "geometry/ray_limits.h"
 #include "fuzz_checks.h"
+#include "geometry/ray_limits.h"
 #include "io/poses_file.h"
 #include "io/text_files.h"
 

@@ -6,8 +6,8 @@
 // holding a revolve Geometry), where Embree aborts the process on a ray beyond its contract.
 #include "embree/embree_handles.h"
 #include "embree/embree_rays.h"
-#include "geometry/ray_limits.h"
 #include "fuzz_checks.h"
+#include "geometry/ray_limits.h"
 #include "io/text_files.h"
 
 #include <array>

@@ -7,13 +7,13 @@
 // beyond its range (also inside an instance), and the scene must have refused none. Anything else,
 // or a sanitizer report, is a finding. Profile CSVs resolve against a folder that does not exist,
 // so a "csv" entry must end in a clean SceneError too.
+#include "fuzz_checks.h"
+#include "geometry/placement.h"
 #include "geometry/ray_limits.h"
 #include "geometry/vector_math.h"
-#include "fuzz_checks.h"
 #include "io/scene_file.h"
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
-#include "geometry/transform.h"
 
 #include <cmath>
 #include <cstddef>
@@ -27,7 +27,7 @@ using app::operator*;
 
 namespace {
 
-void checkUnit(const io::Vec3d& v) {
+void checkUnit(const app::Vec3d& v) {
   FUZZ_CHECK(std::abs(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) - 1) < 1e-9);
 }
 
@@ -35,7 +35,7 @@ void checkRange(const io::Rgb& c, double hi) {
   for (const double x : c) FUZZ_CHECK(x >= 0 && x <= hi);
 }
 
-void checkPosition(const io::Vec3d& p) {
+void checkPosition(const app::Vec3d& p) {
   for (const double x : p) FUZZ_CHECK(std::abs(x) <= app::kMaxWorldCoordinate);
 }
 
@@ -115,11 +115,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkUnit(object.transform.rotateAxis);
     for (const double s : object.transform.scale) FUZZ_CHECK(s >= app::kMinScale && s <= app::kMaxScale);
     checkPosition(object.transform.translate);
-    FUZZ_CHECK(scene::worldReach(scene.profiles[object.profile].profile, object.transform) <= app::kMaxWorldCoordinate);
+    FUZZ_CHECK(app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform)) <=
+               app::kMaxWorldCoordinate);
   }
   for (const io::SceneQuad& quad : scene.quads) {
     FUZZ_CHECK(quad.material < scene.materials.size());
-    for (const io::Vec3d& corner : quad.corners) checkPosition(corner);
+    for (const app::Vec3d& corner : quad.corners) checkPosition(corner);
   }
   for (const io::SceneLight& light : scene.lights) {
     if (light.type == io::LightType::sun) {

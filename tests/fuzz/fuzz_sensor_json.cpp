@@ -5,8 +5,8 @@
 // most a turn, range 0 <= min < max, resolution and stddev >= 0), whose beam angles (fanAngles)
 // run from min_angle to max_angle without going back. Anything else, or a sanitizer report, is a
 // finding.
-#include "geometry/ray_limits.h"
 #include "fuzz_checks.h"
+#include "geometry/ray_limits.h"
 #include "io/sensor_file.h"
 
 #include <cmath>

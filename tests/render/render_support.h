@@ -1,8 +1,8 @@
 // Rendering a scene given as JSON text, in process, for the renderer's tests.
 #pragma once
 
-#include "render/image_output.h"
 #include "io/scene_file.h"
+#include "render/image_output.h"
 #include "render/renderer.h"
 #include "scene/embree_scene.h"
 

@@ -83,8 +83,8 @@ TEST(SceneFileTest, TinyDirectionsNormaliseAsUnitOnes) {
   const testing::ScratchDirectory dir;
   dir.write("bottle.csv", testing::kBottleCsv);
   const io::SceneDescription scene = io::parseScene(text, "scene.json", dir.path().string());
-  EXPECT_EQ(scene.objects[1].transform.rotateAxis, (io::Vec3d{1, 0, 0}));
-  EXPECT_EQ(scene.camera.up, (io::Vec3d{0, 0, 1}));
+  EXPECT_EQ(scene.objects[1].transform.rotateAxis, (app::Vec3d{1, 0, 0}));
+  EXPECT_EQ(scene.camera.up, (app::Vec3d{0, 0, 1}));
   const double n = std::sqrt(0.3 * 0.3 + 1);
   EXPECT_NEAR(scene.lights[0].direction[1], 0.3 / n, 1e-15);
   EXPECT_NEAR(scene.lights[0].direction[2], -1 / n, 1e-15);

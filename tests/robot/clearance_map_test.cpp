@@ -23,8 +23,8 @@ using testing::Vec3d;
 
 constexpr double kExact = 1e-12;  // double arithmetic on metre-sized closed forms
 
-io::SceneTransform placed(Vec3d translate, std::array<double, 4> rotate = {0, 0, 1, 0}, Vec3d scale = {1, 1, 1}) {
-  io::SceneTransform t;
+app::Transform placed(Vec3d translate, std::array<double, 4> rotate = {0, 0, 1, 0}, Vec3d scale = {1, 1, 1}) {
+  app::Transform t;
   t.translate = translate;
   const double n = std::hypot(rotate[0], rotate[1], rotate[2]);
   t.rotateAxis = {rotate[0] / n, rotate[1] / n, rotate[2] / n};
@@ -125,7 +125,7 @@ TEST(ClearanceMapTest, FloorsWallsLintelsAndTableTopsExactly) {
 
 // The least signed distance over dense samples of a placed profile's surface: an upper bound of
 // the true clearance (samples are surface points), within the sampling's spacing of it.
-double sampledClearance(const std::vector<Point2>& profile, const io::SceneTransform& t, const RobotBody& robot) {
+double sampledClearance(const std::vector<Point2>& profile, const app::Transform& t, const RobotBody& robot) {
   const double theta = t.rotateDegrees * M_PI / 180, c = std::cos(theta), s = std::sin(theta);
   const auto& k = t.rotateAxis;
   const double r[3][3] = {
@@ -153,7 +153,7 @@ double sampledClearance(const std::vector<Point2>& profile, const io::SceneTrans
 
 TEST(ClearanceMapTest, PoleLyingOnItsSideIsTiltedButExactWhereTheGapIsPlain) {
   // A pole of radius 0.25 laid along -y (a quarter turn about x) with its axis at height 1.
-  const io::SceneTransform lying = placed({0, 0, 1}, {1, 0, 0, 90});
+  const app::Transform lying = placed({0, 0, 1}, {1, 0, 0, 90});
   const io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(0.25, 0, 2), lying, "lying pole"}});
   // Beside it, the robot's heights spanning its axis: the gap is horizontal, 1 - 0.25 - 0.3.
   const RobotBody beside{1, -1, 0.5, 1.5, 0.3};
@@ -179,7 +179,7 @@ TEST(ClearanceMapTest, TiltedShapesAndSlopingQuadsNeverReportMoreThanThereIs) {
   std::uniform_real_distribution<double> u(-1.5, 1.5);
   // A cone tilted 50 degrees about a skew axis and unevenly scaled, and a barrel-like profile at 20 degrees.
   const std::vector<Point2> barrel{{0, 0}, {0.28, 0}, {0.33, 0.44}, {0.28, 0.88}, {0, 0.88}};
-  const std::vector<std::pair<std::vector<Point2>, io::SceneTransform>> cases{
+  const std::vector<std::pair<std::vector<Point2>, app::Transform>> cases{
       {kCone, placed({0, 0, 0.6}, {1, 2, 0.5, 50}, {1, 1.5, 0.8})}, {barrel, placed({0.2, -0.1, 0.1}, {0, 1, 0, 20})}};
   for (const auto& [profile, transform] : cases) {
     const io::SceneDescription scene = testing::sceneOf({{profile, transform, "tilted"}});

@@ -3,6 +3,7 @@
 // quadratics, in double (independent of revolve's kernel and of Embree).
 #pragma once
 
+#include "geometry/vec3d.h"
 #include "io/scene_file.h"
 
 #include <revolve/revolve.h>
@@ -15,16 +16,16 @@
 
 namespace revolve::testing {
 
-using Vec3d = std::array<double, 3>;
+using app::Vec3d;
 
 struct PlacedProfile {
   std::vector<Point2> points;
-  io::SceneTransform transform;
+  app::Transform transform;
   std::string name;
 };
 
-inline io::SceneTransform at(double x, double y, double z = 0) {
-  io::SceneTransform t;
+inline app::Transform at(double x, double y, double z = 0) {
+  app::Transform t;
   t.translate = {x, y, z};
   return t;
 }

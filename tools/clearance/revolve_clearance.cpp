@@ -13,9 +13,9 @@
 #include "robot/robot_argument.h"
 #include "scene/degenerate_objects.h"
 #include "scene/picking.h"
+#include "threads/thread_arenas.h"
 
 #include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -69,7 +69,7 @@ void run(const Options& options) {
 
   const robot::ClearanceMap map(description, ground);
   std::vector<robot::SceneClearance> results(poses.size());
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  tbb::task_arena& arena = app::threadArena(options.threads > 0 ? options.threads : 0);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, poses.size(), [&](std::size_t i) {
       const io::RobotPose& p = poses[i];
@@ -126,7 +126,8 @@ int main(int argc, char** argv) {
             return value.empty() ? std::string("the value is empty; expected a height") : std::string();
           },
           "Z"));
-  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
+  app.add_option("--threads", options.threads, "worker threads (default: all)")
+      ->check(app::wholeNumberIn(1, app::kMaxThreads));
   if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-clearance")) return *status;
   return app::runTool("revolve-clearance", options.scene, [&] { run(options); });
 }

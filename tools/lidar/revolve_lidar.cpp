@@ -12,6 +12,7 @@
 #include "robot/scan_plot.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
+#include "threads/thread_arenas.h"
 
 #include <tbb/info.h>
 #include <CLI/CLI.hpp>
@@ -149,7 +150,7 @@ int main(int argc, char** argv) {
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 16))
       ->capture_default_str();
   app.add_option("--threads", options.threads, "worker threads (default: all); the scan does not depend on it")
-      ->check(app::wholeNumberIn(1, 1024));
+      ->check(app::wholeNumberIn(1, app::kMaxThreads));
   if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-lidar")) return *status;
   return app::runTool("revolve-lidar", options.scene, [&] { run(options, pcdData->count() > 0); });
 }

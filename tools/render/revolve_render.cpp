@@ -4,17 +4,18 @@
 // format are documented in README.md.
 #include "cli/command_line.h"
 #include "embree/memory_check.h"
-#include "render/curve_tolerance.h"
-#include "render/glass_checks.h"
-#include "render/image_output.h"
 #include "io/output_set.h"
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
+#include "render/curve_tolerance.h"
+#include "render/glass_checks.h"
+#include "render/image_output.h"
 #include "render/progress.h"
 #include "render/renderer.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
 #include "scene/picking.h"
+#include "threads/thread_arenas.h"
 
 #include <tbb/info.h>
 #include <CLI/CLI.hpp>
@@ -350,7 +351,8 @@ int main(int argc, char** argv) {
                  "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
                  "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile")
       ->check(app::toleranceCheck(true));
-  app.add_option("--threads", options.threads, "worker threads (default: all)")->check(app::wholeNumberIn(1, 1024));
+  app.add_option("--threads", options.threads, "worker threads (default: all)")
+      ->check(app::wholeNumberIn(1, app::kMaxThreads));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX))
       ->capture_default_str();

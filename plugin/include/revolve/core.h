@@ -301,6 +301,9 @@ class Shape {
   // Precondition: spline() != nullptr and segment < profile().segmentCount().
   std::uint32_t splinePiece(std::uint32_t segment) const noexcept;
   const BuildOptions& options() const noexcept;
+  // Whether the shape bounds a solid: its profile, or its spline, is closed (its ends meet, or
+  // both lie on the axis).
+  bool closed() const noexcept;
   // Object-space box, padded by 2^-12 of its largest coordinate so that Embree's single-precision
   // box test does not cull hits where the surface touches it, for rays starting up to ~10^5 times
   // that coordinate away (measured; farther, rays that graze the box's edges may lose such hits).
@@ -324,7 +327,7 @@ struct Ray {
 };
 
 struct Hit {
-  float t;      // tnear <= t <= tfar
+  float t;      // tnear <= t <= tfar, and finite: a hit beyond float's range (a direction of subnormal length) is none
   Vec3 point;   // hit point, computed in double precision from the exact solution
   Vec3 normal;  // unit geometric normal (see Conventions)
   float u, v;   // surface parameters (see Conventions)
@@ -441,6 +444,14 @@ struct MeridianPoint {
 // the distance from any point at distance rho from the axis and height z to the surface. A
 // non-finite query or rho < 0 gives a NaN distance.
 [[nodiscard]] MeridianPoint closestMeridianPoint(const Shape& shape, Point2 query) noexcept;
+
+// Whether the point at distance `query.r` >= 0 from the axis and height `query.z` lies inside the
+// solid a closed shape bounds (Shape::closed()): the crossing number, in the meridian plane, of the
+// half-line {(r, z) : r > query.r} with the profile (a spline's own curve, each Bezier piece split
+// where z turns) closed along the axis. Points within rounding of the surface may land on either
+// side; their distance to it is zero to that rounding anyway. The point x, y, z of object space is
+// (hypot(x, y), z). An open shape, a non-finite query or query.r < 0 gives an unspecified answer.
+[[nodiscard]] bool insideSolid(const Shape& shape, Point2 query) noexcept;
 
 // A solid vertical cylinder with flat ends (a robot's body), upright beside an upright shape: its
 // axis parallel to the shape's axis at distance `axisDistance`, radius `radius`, and heights

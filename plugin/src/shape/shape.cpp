@@ -191,6 +191,8 @@ const Profile& Shape::profile() const noexcept { return impl_->profile; }
 const Spline* Shape::spline() const noexcept { return impl_->spline ? &*impl_->spline : nullptr; }
 std::uint32_t Shape::splinePiece(std::uint32_t segment) const noexcept { return impl_->parts[segment].piece; }
 const BuildOptions& Shape::options() const noexcept { return impl_->options; }
+
+bool Shape::closed() const noexcept { return impl_->spline ? impl_->spline->closed() : impl_->profile.closed(); }
 Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 
 std::size_t Shape::treeNodeCount() const noexcept {

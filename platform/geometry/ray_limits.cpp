@@ -1,8 +1,8 @@
-#include "query_limits.h"
+#include "geometry/ray_limits.h"
 
 #include <cstdio>
 
-namespace revolve::python {
+namespace revolve::app {
 namespace {
 
 std::string number(float x) {
@@ -20,29 +20,29 @@ std::string componentFault(const char* what, const char* axis, float x, double l
   return "";
 }
 
+constexpr const char* kAxes[3] = {"x", "y", "z"};
+
 }  // namespace
 
-std::string pointFault(const float* p) {
-  const char* axes[3] = {"x", "y", "z"};
+std::string queryPointFault(const float* p) {
   for (int i = 0; i < 3; ++i) {
-    std::string fault = componentFault("point", axes[i], p[i], kMaxOrigin, "4.4e12 (4 x 2^40)");
+    std::string fault = componentFault("point", kAxes[i], p[i], kMaxRayOrigin, "4.4e12 (4 x 2^40)");
     if (!fault.empty()) return fault;
   }
   return "";
 }
 
-std::string rayFault(const float* r) {
-  const char* axes[3] = {"x", "y", "z"};
+std::string queryRayFault(const float* r) {
   for (int i = 0; i < 3; ++i) {
-    std::string fault = componentFault("origin", axes[i], r[i], kMaxOrigin, "4.4e12 (4 x 2^40)");
+    std::string fault = componentFault("origin", kAxes[i], r[i], kMaxRayOrigin, "4.4e12 (4 x 2^40)");
     if (!fault.empty()) return fault;
   }
   for (int i = 0; i < 3; ++i) {
-    std::string fault = componentFault("direction", axes[i], r[3 + i], kMaxDirection, "1.1e12 (2^40)");
+    std::string fault = componentFault("direction", kAxes[i], r[3 + i], kMaxWorldCoordinate, "1.1e12 (2^40)");
     if (!fault.empty()) return fault;
   }
   if (r[3] == 0 && r[4] == 0 && r[5] == 0) return "direction (0, 0, 0) is zero: a ray needs a direction";
   return "";
 }
 
-}  // namespace revolve::python
+}  // namespace revolve::app

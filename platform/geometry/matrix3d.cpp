@@ -1,10 +1,9 @@
-#include "geometry/transform.h"
+#include "geometry/matrix3d.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
-namespace revolve::scene {
+namespace revolve::app {
 
 Vec3 Matrix3d::applyAbsolute(Vec3 v) const {
   return {float(std::abs(m[0][0]) * v.x + std::abs(m[0][1]) * v.y + std::abs(m[0][2]) * v.z),
@@ -14,7 +13,10 @@ Vec3 Matrix3d::applyAbsolute(Vec3 v) const {
 
 double Matrix3d::infinityNorm() const {
   double worst = 0;
-  for (const auto& row : m) worst = std::max(worst, std::abs(row[0]) + std::abs(row[1]) + std::abs(row[2]));
+  for (const auto& row : m) {
+    const double sum = std::abs(row[0]) + std::abs(row[1]) + std::abs(row[2]);
+    worst = sum > worst || std::isnan(sum) ? sum : worst;
+  }
   return worst;
 }
 
@@ -72,56 +74,11 @@ Matrix3d rotationAboutZ(double a) {
   return {Vec3d{std::cos(a), -std::sin(a), 0}, Vec3d{std::sin(a), std::cos(a), 0}, Vec3d{0, 0, 1}};
 }
 
-Matrix3d rotationOf(const io::SceneTransform& transform) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0;
-  const double c = std::cos(theta), s = std::sin(theta);
-  const auto& k = transform.rotateAxis;
+Matrix3d rotationAbout(const Vec3d& k, double radians) {
+  const double c = std::cos(radians), s = std::sin(radians);
   return {Vec3d{c + k[0] * k[0] * (1 - c), k[0] * k[1] * (1 - c) - k[2] * s, k[0] * k[2] * (1 - c) + k[1] * s},
           Vec3d{k[1] * k[0] * (1 - c) + k[2] * s, c + k[1] * k[1] * (1 - c), k[1] * k[2] * (1 - c) - k[0] * s},
           Vec3d{k[2] * k[0] * (1 - c) - k[1] * s, k[2] * k[1] * (1 - c) + k[0] * s, c + k[2] * k[2] * (1 - c)}};
 }
 
-Matrix3d linearPart(const io::SceneTransform& transform) {
-  Matrix3d m = rotationOf(transform);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m[i][j] *= transform.scale[j];
-  }
-  return m;
-}
-
-Matrix3d inverseLinearPart(const io::SceneTransform& transform) {
-  const Matrix3d rotation = rotationOf(transform);
-  Matrix3d inverse;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) inverse[i][j] = rotation[j][i] / transform.scale[i];
-  }
-  return inverse;
-}
-
-double worldReach(const Profile& profile, const io::SceneTransform& transform) {
-  double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-  for (const Point2 p : profile.points())
-    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
-  const Matrix3d m = linearPart(transform);
-  double reach = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3d local{corner & 1 ? rMax : -rMax, corner & 2 ? rMax : -rMax, corner & 4 ? zHigh : zLow};
-    for (int a = 0; a < 3; ++a) {
-      reach = std::max(reach,
-                       std::abs(m[a][0] * local[0] + m[a][1] * local[1] + m[a][2] * local[2] + transform.translate[a]));
-    }
-  }
-  return reach;
-}
-
-Vec3d rotate(const io::SceneTransform& transform, const Vec3d& v) {
-  const double theta = transform.rotateDegrees * std::numbers::pi / 180.0, c = std::cos(theta), s = std::sin(theta);
-  const Vec3d& k = transform.rotateAxis;
-  const Vec3d kv{k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]};
-  const double along = k[0] * v[0] + k[1] * v[1] + k[2] * v[2];
-  Vec3d out;
-  for (int i = 0; i < 3; ++i) out[i] = v[i] * c + kv[i] * s + k[i] * along * (1 - c);
-  return out;
-}
-
-}  // namespace revolve::scene
+}  // namespace revolve::app
