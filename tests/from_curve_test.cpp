@@ -73,9 +73,11 @@ TEST(FromCurveTest, StraightRunsGetNoPoints) {
     EXPECT_EQ(polyline.points()[i].r, corners[i].r);
     EXPECT_EQ(polyline.points()[i].z, corners[i].z);
   }
-  // Two collinear straight pieces in a row merge into one chord.
+  // Two collinear straight pieces in a row merge into one chord (a wall at r = 0.5: a curve on the
+  // axis itself is refused).
   const Profile merged = Profile::fromCurve(
-      Spline(SplineKind::bezier, std::vector<Point2>{{0, 0}, {0, 0.1}, {0, 0.2}, {0, 0.3}, {0, 0.5}, {0, 0.7}, {0, 1}}),
+      Spline(SplineKind::bezier,
+             std::vector<Point2>{{0.5, 0}, {0.5, 0.1}, {0.5, 0.2}, {0.5, 0.3}, {0.5, 0.5}, {0.5, 0.7}, {0.5, 1}}),
       1e-9);
   EXPECT_EQ(merged.points().size(), 2u);
 }

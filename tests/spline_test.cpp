@@ -100,6 +100,18 @@ TEST(SplineTest, CurvesTouchingTheAxisBetweenTheirPointsAreRefused) {
                          std::vector<Point2>{{0, 0}, {0.5, 0}, {1, 0}, {-1 + 2e-6, 0.5}, {1, 1}, {0.5, 1}, {0, 1}}));
 }
 
+TEST(SplineTest, CurvesLyingOnTheAxisAreRefused) {
+  // Every point at r = 0: each kind's pieces have r = 0 all along, a surface of no area (r never
+  // turns there, so the test for touching the axis at a turn of r does not see it).
+  expectError(SplineKind::quadratic, {{0, 0}, {0, 0.5}, {0, 1}}, Rule::crossesAxis, 0, "lies on the axis");
+  expectError(SplineKind::bezier, {{0, 0}, {0, 0.3}, {0, 0.6}, {0, 1}}, Rule::crossesAxis, 0, "lies on the axis");
+  expectError(SplineKind::catmullRom, {{0, 0}, {0, 0.5}, {0, 1}}, Rule::crossesAxis, 0, "lies on the axis");
+  expectError(SplineKind::natural, {{0, 0}, {0, 0.5}, {0, 1}}, Rule::crossesAxis, 0, "lies on the axis");
+  // One piece on the axis among others (a quadratic's second piece from (0, 1) up to (0, 2)).
+  expectError(SplineKind::quadratic, {{0, 0}, {1, 0.5}, {0, 1}, {0, 1.5}, {0, 2}}, Rule::crossesAxis, 2,
+              "lies on the axis");
+}
+
 TEST(SplineTest, InterpolatingKindsRefuseRepeatedPoints) {
   expectError(SplineKind::catmullRom, {{0, 0}, {1, 1}, {1, 1}, {0, 2}}, Rule::segmentTooShort, 2, "repeats point 1");
   expectError(SplineKind::natural, {{0, 0}, {0, 0}, {0, 2}}, Rule::segmentTooShort, 1, "chords");

@@ -6,6 +6,7 @@
 #include "curve/curve_self_intersection.h"
 #include "curve/monotone_parts.h"
 #include "curve/spline_pieces.h"
+#include "profile/points.h"
 #include "util/format.h"
 
 #include <algorithm>
@@ -26,9 +27,7 @@ constexpr KindName kKindNames[] = {{SplineKind::linear, "linear"},
                                    {SplineKind::catmullRom, "catmull-rom"},
                                    {SplineKind::natural, "natural"}};
 
-std::string describePoint(std::size_t index, Point2 p) {
-  return "spline point " + std::to_string(index) + " (r = " + formatNumber(p.r) + ", z = " + formatNumber(p.z) + ")";
-}
+std::string describePoint(std::size_t index, Point2 p) { return detail::describePoint("spline", index, p); }
 
 // Whether the curve passes through point i (Bezier control points off the curve may have r < 0).
 bool onCurve(SplineKind kind, std::size_t i) {
@@ -75,16 +74,8 @@ void checkCount(SplineKind kind, std::size_t n) {
 }
 
 void checkPoint(SplineKind kind, std::size_t index, Point2 p) {
-  if (!std::isfinite(p.r) || !std::isfinite(p.z)) {
-    throw ProfileError(ProfileError::Rule::nonFinite, index,
-                       describePoint(index, p) + ": coordinates must be finite numbers");
-  }
-  if (std::abs(p.r) > Profile::kMaxCoordinate || std::abs(p.z) > Profile::kMaxCoordinate) {
-    throw ProfileError(ProfileError::Rule::outOfRange, index,
-                       describePoint(index, p) + ": coordinates must be within +-2^60 (" +
-                           formatNumber(Profile::kMaxCoordinate) +
-                           "); Embree's single-precision bounds and the kernel's products support no more");
-  }
+  detail::checkFinite("spline", index, p);
+  detail::checkWithinRange("spline", index, p);
   if (p.r < 0.0 && onCurve(kind, index)) {
     throw ProfileError(ProfileError::Rule::negativeRadius, index,
                        describePoint(index, p) +
@@ -123,11 +114,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
   points_.assign(input.begin(), input.end());
   double extent = 0.0;
   for (const Point2& p : points_) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
-  if (extent < Profile::kMinExtent) {
-    throw ProfileError(ProfileError::Rule::outOfRange, 0,
-                       "spline extent " + formatNumber(extent) + " (its largest coordinate) is below 2^-60 (" +
-                           formatNumber(Profile::kMinExtent) + "), too small for the kernel's products");
-  }
+  detail::checkExtent("spline", 0, extent);
 
   const bool interpolating = kind == SplineKind::catmullRom || kind == SplineKind::natural;
   if (interpolating) {
@@ -184,6 +171,14 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
                              formatNumber(extent) + ", which the kernel cannot resolve");
     }
     const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r};
+    // A piece whose control values of r are all zero lies on the axis all along (r never turns
+    // there, so the test below would not see it): a surface of no area between its points.
+    if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0 && r[3] == 0.0) {
+      throw ProfileError(ProfileError::Rule::crossesAxis, pieceStart_[i],
+                         describePiece(i) +
+                             " lies on the axis (r = 0 all along); the curve must keep r > 0 between the points it "
+                             "passes through (it may reach the axis only at such a point)");
+    }
     double turns[2];
     for (int k = 0, count = detail::derivativeSignChanges(r, turns); k < count; ++k) {
       // Between the points it passes through the curve must stay off the axis: r = 0 at a turn of r
