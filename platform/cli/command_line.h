@@ -4,8 +4,8 @@
 // guard that turns any failure of the work into one line and status 1.
 #pragma once
 
+#include "io/curve_tolerance.h"
 #include "io/temporary_files.h"
-#include "io/tolerance_option.h"
 
 #include <CLI/CLI.hpp>
 
@@ -80,14 +80,22 @@ CLI::Validator wholeNumberIn(T lo, T hi) {
       "INT in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
-// --tolerance (common/tolerance_option.h): a finite number > 0, or "pixel" where `pixelAllowed`;
-// an empty value is refused as any other.
-inline CLI::Validator toleranceCheck(bool pixelAllowed) {
-  return CLI::Validator(
-      [pixelAllowed](std::string& text) {
-        return toleranceOption(text, pixelAllowed) ? std::string() : toleranceRefusal(text, pixelAllowed);
-      },
-      pixelAllowed ? "pixel|T" : "T");
+// --tolerance into `target`: "pixel" where `pixelAllowed`, or a number held to the rule
+// (io/curve_tolerance.h); a refused value (an empty one too) is CLI11's error naming it.
+inline CLI::Option* addToleranceOption(CLI::App& app, std::optional<io::CurveTolerance>& target, bool pixelAllowed,
+                                       const std::string& help) {
+  return app
+      .add_option_function<std::string>(
+          "--tolerance",
+          [&target, pixelAllowed](const std::string& text) { target = io::parseCurveTolerance(text, pixelAllowed); },
+          help)
+      ->check(CLI::Validator(
+          [pixelAllowed](std::string& text) {
+            return io::parseCurveTolerance(text, pixelAllowed) ? std::string()
+                                                               : io::toleranceTextFault(text, pixelAllowed);
+          },
+          pixelAllowed ? "pixel|T" : "T"))
+      ->type_name(pixelAllowed ? "TEXT" : "FLOAT");
 }
 
 // Runs a tool's work after its command line is parsed: any exception becomes one line "tool:

@@ -1,6 +1,6 @@
 #include "io/scene_file.h"
 
-#include "io/curve_polyline.h"
+#include "io/curve_tolerance.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
 
@@ -141,7 +141,8 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
               "applies to a curved \"spline\" (quadratic, bezier, catmull-rom or natural) only; a polyline is traced "
               "as it is");
     }
-    if (!(tolerance > 0)) in.fail(tolerancePath, json::numberText(tolerance) + " is out of range: a tolerance is > 0");
+    if (const std::optional<std::string> fault = toleranceFault(tolerance, numberText(*value)))
+      in.fail(tolerancePath, *fault);
   }
   const ProfileSource source = readPoints(in, json, path, directory);
   const auto failAt = [&](const ProfileError& error) {
@@ -175,7 +176,7 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
   for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
   std::optional<Profile> polyline;
   try {
-    // A tolerance the user gave is held to the rule every tool applies (io/curve_polyline.h).
+    // A tolerance the user gave is held to the rule every tool applies (io/curve_tolerance.h).
     polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance)
                                    : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
   } catch (const std::invalid_argument& error) {

@@ -7,6 +7,7 @@
 
 #include "geometry/placement.h"
 #include "geometry/ray_limits.h"
+#include "io/curve_tolerance.h"
 #include "io/scene_file.h"
 #include "scene/degenerate_objects.h"
 
@@ -37,9 +38,8 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
   std::optional<double> tolerance;
   if (!toleranceObject.is_none()) {
     const double value = toleranceObject.cast<double>();
-    if (!(value > 0 && std::isfinite(value))) {
-      throw py::value_error("tolerance = " + std::string(py::repr(toleranceObject)) +
-                            ": must be a positive finite number");
+    if (const std::optional<std::string> fault = io::toleranceFault(value, std::string(py::repr(toleranceObject)))) {
+      throw py::value_error("tolerance: " + *fault);
     }
     tolerance = value;
   }

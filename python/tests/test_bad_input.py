@@ -106,7 +106,7 @@ def test_profiles_are_refused_naming_the_point_and_the_rule():
         s.add_revolution([[0, 0], [1, 1]], spline="cubic")
     with pytest.raises(ValueError, match=r"tolerance applies to a spline profile"):
         s.add_revolution([[0, 0], [1, 1]], tolerance=1e-3)
-    with pytest.raises(ValueError, match=r"tolerance = 0.0: must be a positive finite number"):
+    with pytest.raises(ValueError, match=r"tolerance: 0.0 is out of range: a polyline tolerance is a finite number > 0"):
         s.add_revolution([[0, 0], [1, 0], [1, 1]], spline="quadratic", tolerance=0.0)
     with pytest.raises(ValueError, match=r"points: shape \(3, 3\); expected \(N, 2\)"):
         s.add_revolution(np.zeros((3, 3)))

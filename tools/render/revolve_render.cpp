@@ -7,7 +7,7 @@
 #include "io/output_set.h"
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
-#include "render/curve_tolerance.h"
+#include "render/curve_polylines.h"
 #include "render/glass_checks.h"
 #include "render/image_output.h"
 #include "render/progress.h"
@@ -37,7 +37,8 @@ using namespace revolve;
 
 struct Options {
   std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick,
-                             exportPov, tolerance;
+                             exportPov;
+  std::optional<io::CurveTolerance> tolerance;  // --tolerance
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
   std::uint64_t seed = 1;
@@ -100,8 +101,8 @@ void writeStats(io::OutputSet& outputs, const Options& options, const render::Re
   json["memory"] = {{"revolve_bytes", built.revolveBytes()},
                     {"embree_bytes", built.embreeBytes()},
                     {"embree_peak_bytes", built.embreePeakBytes()}};
-  if (!options.tolerance.empty()) {
-    json["tolerance"] = options.tolerance;
+  if (options.tolerance) {
+    json["tolerance"] = options.tolerance->text;
     nlohmann::ordered_json polylines = nlohmann::ordered_json::array();
     for (const render::CurvePolyline& c : curves)
       polylines.push_back({{"profile", c.profile}, {"tolerance", c.tolerance}, {"points", c.points}});
@@ -227,8 +228,6 @@ void run(const Options& options) {
     throw std::runtime_error("--stats: --export-pov without -o renders nothing to report; add -o to render as well");
   }
   if (renders) render::imageFormatFor(output);  // an unknown extension fails before any work
-  std::optional<render::CurveTolerance> tolerance;
-  if (!options.tolerance.empty()) tolerance = render::parseCurveTolerance(options.tolerance);
   io::SceneDescription description = io::readScene(options.scene);
   // Every output is named now (its temporary made: the folder takes files), and none may be an input.
   io::OutputSet outputs;
@@ -267,7 +266,7 @@ void run(const Options& options) {
                                                                   std::to_string(settings.height) + " pixels");
 
   std::vector<render::CurvePolyline> curves;
-  if (tolerance) curves = render::applyCurveTolerance(description, *tolerance, settings.height);
+  if (options.tolerance) curves = render::applyCurveTolerance(description, *options.tolerance, settings.height);
   checkKajiya(options, description);
   const scene::EmbreeScene built(description, buildSettings(options));
   // Every refusal before this point is the run's one line; the scene's warnings now (of the
@@ -347,10 +346,10 @@ int main(int argc, char** argv) {
   app.add_option("--slices", options.slices, "azimuthal steps of --geometry mesh")
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 16))
       ->capture_default_str();
-  app.add_option("--tolerance", options.tolerance,
-                 "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
-                 "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile")
-      ->check(app::toleranceCheck(true));
+  app::addToleranceOption(
+      app, options.tolerance, true,
+      "trace spline profiles as polylines within this tolerance (profile units) instead of exactly; "
+      "\"pixel\": the smallest pixel footprint at which the camera sees an object made of the profile");
   app.add_option("--threads", options.threads, "worker threads (default: all)")
       ->check(app::wholeNumberIn(1, app::kMaxThreads));
   app.add_option("--seed", options.seed, "random seed: the same seed gives the same image")

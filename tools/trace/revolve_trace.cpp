@@ -7,7 +7,7 @@
 #include "embree/embree_rays.h"
 #include "embree/memory_check.h"
 #include "geometry/ray_limits.h"
-#include "io/curve_polyline.h"
+#include "io/curve_tolerance.h"
 #include "io/text_files.h"
 
 #include <revolve/revolve.h>
@@ -34,7 +34,7 @@ struct Options {
   std::string method = "mibit", shell = "cylinder", spline = "linear";
   std::uint32_t subdivisions = 0;
   std::uint32_t slices = 64;
-  double tolerance = 0;  // 0: the curve is traced exactly
+  std::optional<io::CurveTolerance> tolerance;  // none: the curve is traced exactly
 };
 
 // What is traced: the polyline, and the curve when it is traced exactly.
@@ -49,11 +49,11 @@ LoadedProfile loadProfile(const Options& options) {
   const std::string& path = options.profile;
   const io::ProfileFile file = io::readProfileCsv(path);
   const SplineKind kind = *splineKindNamed(options.spline);
-  if (options.tolerance > 0 && kind == SplineKind::linear) {
+  if (options.tolerance && kind == SplineKind::linear) {
     throw std::runtime_error(
         "--tolerance applies to a curved --spline (quadratic, bezier, catmull-rom or natural) only");
   }
-  if (options.method == "kajiya" && kind != SplineKind::linear && !(options.tolerance > 0)) {
+  if (options.method == "kajiya" && kind != SplineKind::linear && !options.tolerance) {
     throw std::runtime_error(
         "--method kajiya: Kajiya's strip tree bounds polylines only, and a curved --spline is traced "
         "exactly; use --method mibit or linear, or --tolerance to trace the curve as a polyline");
@@ -69,10 +69,10 @@ LoadedProfile loadProfile(const Options& options) {
     Spline spline(kind, file.points);
     double size = 0;
     for (const Point2& p : spline.bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
-    // A tolerance the user gave is held to the scene file's rule (io/curve_polyline.h).
-    Profile polyline =
-        options.tolerance > 0 ? io::curvePolyline(spline, options.tolerance) : Profile::fromCurve(spline, 1e-5 * size);
-    if (options.tolerance > 0) return {std::move(polyline), std::nullopt};
+    // A tolerance the user gave is held to the scene file's rule (io/curve_tolerance.h).
+    Profile polyline = options.tolerance ? io::curvePolyline(spline, options.tolerance->value)
+                                         : Profile::fromCurve(spline, 1e-5 * size);
+    if (options.tolerance) return {std::move(polyline), std::nullopt};
     return {std::move(polyline), std::move(spline)};
   } catch (const ProfileError& error) {
     const std::size_t line = error.index() < file.lines.size() ? file.lines[error.index()] : 0;
@@ -227,9 +227,9 @@ int main(int argc, char** argv) {
                  "(3n + 1), catmull-rom or natural (through every point); curves are traced exactly")
       ->check(CLI::IsMember({"linear", "quadratic", "bezier", "catmull-rom", "natural"}))
       ->capture_default_str();
-  app.add_option("--tolerance", options.tolerance,
-                 "trace a curved --spline as its polyline within this distance (Profile::fromCurve) instead of exactly")
-      ->check(app::toleranceCheck(false));
+  app::addToleranceOption(
+      app, options.tolerance, false,
+      "trace a curved --spline as its polyline within this distance (Profile::fromCurve) instead of exactly");
   app.add_option("--slices", options.slices, "azimuthal steps of the tessellated mesh (--method mesh)")
       ->check(app::wholeNumberIn<std::uint32_t>(3, 1u << 24))
       ->capture_default_str();

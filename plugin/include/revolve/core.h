@@ -109,6 +109,14 @@ class Profile {
   // where each point lies on the curve. Throws std::invalid_argument unless tolerance > 0 and
   // finite and at least 2^-40 of the curve's extent (double-precision chords resolve no finer).
   [[nodiscard]] static Profile fromCurve(const Spline& curve, double tolerance);
+  // What a polyline tolerance must be (the rule fromCurve holds it to), and the rule as every
+  // message that refuses one states it.
+  static constexpr bool toleranceAllowed(double tolerance) noexcept {
+    return tolerance > 0.0 && tolerance < std::numeric_limits<double>::infinity();
+  }
+  static constexpr const char* kToleranceRule =
+      "a polyline tolerance is a finite number > 0 (the polyline's largest distance from the curve, in the "
+      "profile's units)";
 
   std::span<const Point2> points() const noexcept { return points_; }
   std::size_t segmentCount() const noexcept { return points_.size() - 1; }

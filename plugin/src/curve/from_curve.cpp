@@ -147,9 +147,9 @@ constexpr int kLoopSamples = 16;
 }  // namespace
 
 Profile Profile::fromCurve(const Spline& curve, double tolerance) {
-  if (!(tolerance > 0.0 && tolerance < HUGE_VAL)) {
+  if (!toleranceAllowed(tolerance)) {
     throw std::invalid_argument("polyline tolerance " + detail::formatNumber(tolerance) +
-                                ": must be a finite number > 0");
+                                " is out of range: " + kToleranceRule);
   }
   if (curve.kind() == SplineKind::linear) return Profile(curve.points());
   double extent = 0.0;

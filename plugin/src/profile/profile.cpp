@@ -15,25 +15,15 @@ namespace {
 using detail::formatNumber;
 using detail::samePoint;
 
-std::string describePoint(std::size_t index, Point2 p) {
-  return "profile point " + std::to_string(index) + " (r = " + formatNumber(p.r) + ", z = " + formatNumber(p.z) + ")";
-}
+std::string describePoint(std::size_t index, Point2 p) { return detail::describePoint("profile", index, p); }
 
 void checkPoint(std::size_t index, Point2 p) {
-  if (!std::isfinite(p.r) || !std::isfinite(p.z)) {
-    throw ProfileError(ProfileError::Rule::nonFinite, index,
-                       describePoint(index, p) + ": coordinates must be finite numbers");
-  }
+  detail::checkFinite("profile", index, p);
   if (p.r < 0.0) {
     throw ProfileError(ProfileError::Rule::negativeRadius, index,
                        describePoint(index, p) + ": r must be >= 0 (r is the distance from the z axis)");
   }
-  if (std::abs(p.r) > Profile::kMaxCoordinate || std::abs(p.z) > Profile::kMaxCoordinate) {
-    throw ProfileError(ProfileError::Rule::outOfRange, index,
-                       describePoint(index, p) + ": coordinates must be within +-2^60 (" +
-                           formatNumber(Profile::kMaxCoordinate) +
-                           "); Embree's single-precision bounds and the kernel's products support no more");
-  }
+  detail::checkWithinRange("profile", index, p);
 }
 
 }  // namespace
@@ -43,11 +33,7 @@ void checkPoint(std::size_t index, Point2 p) {
 void Profile::checkScale() const {
   double extent = 0.0;
   for (const Point2& p : points_) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
-  if (extent < kMinExtent) {
-    throw ProfileError(ProfileError::Rule::outOfRange, sourceIndex_[0],
-                       "profile extent " + formatNumber(extent) + " (its largest coordinate) is below 2^-60 (" +
-                           formatNumber(kMinExtent) + "), too small for the kernel's products");
-  }
+  detail::checkExtent("profile", sourceIndex_[0], extent);
   const double shortest = extent * kMinSegmentFraction;
   for (std::size_t k = 0; k + 1 < points_.size(); ++k) {
     const double length = std::hypot(points_[k + 1].r - points_[k].r, points_[k + 1].z - points_[k].z);

@@ -3,6 +3,7 @@
 // camera sees any object made of them.
 #pragma once
 
+#include "io/curve_tolerance.h"
 #include "io/scene_file.h"
 
 #include <optional>
@@ -10,15 +11,6 @@
 #include <vector>
 
 namespace revolve::render {
-
-struct CurveTolerance {
-  bool pixel = false;  // the pixel footprint at the nearest object using the profile
-  double value = 0;    // else: this tolerance, in each profile's own units (> 0)
-};
-
-// "pixel" or a finite number > 0 (common/tolerance_option.h, shared with revolve-trace); throws
-// std::runtime_error naming the option otherwise.
-CurveTolerance parseCurveTolerance(const std::string& text);
 
 struct CurvePolyline {
   std::string profile;
@@ -31,10 +23,10 @@ struct CurvePolyline {
 // point of the object's bounding sphere, over the object's largest scale; the least over the
 // profile's objects). A profile seen from inside an object's bounding sphere, or whose footprint is
 // below 2^-30 of its size, or so wide that its polyline would lie on the axis (its objects span
-// about a pixel), stays exact. A number is held to the scene file's rule (io/curve_polyline.h):
+// about a pixel), stays exact. A number is held to the scene file's rule (io/curve_tolerance.h):
 // std::runtime_error naming the profile when it would collapse the curve onto the axis. The
 // polylines shade with their curves' own normals (SceneProfile::curve).
-std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& tolerance,
+std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const io::CurveTolerance& tolerance,
                                                int height);
 
 }  // namespace revolve::render

@@ -1,8 +1,6 @@
-#include "render/curve_tolerance.h"
+#include "render/curve_polylines.h"
 
 #include "geometry/placement.h"
-#include "io/curve_polyline.h"
-#include "io/tolerance_option.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,13 +13,8 @@ namespace revolve::render {
 
 using app::Vec3d;
 
-CurveTolerance parseCurveTolerance(const std::string& text) {
-  const std::optional<app::ToleranceOption> option = app::toleranceOption(text, true);
-  if (!option) throw std::runtime_error("--tolerance: " + app::toleranceRefusal(text, true));
-  return {option->pixel, option->value};
-}
-
-std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const CurveTolerance& choice, int height) {
+std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, const io::CurveTolerance& choice,
+                                               int height) {
   std::vector<double> tolerance(scene.profiles.size(), std::numeric_limits<double>::infinity());
   const double pixelAngle = 2.0 * std::tan(scene.camera.fovDegrees * std::numbers::pi / 360.0) / height;
   for (const io::SceneObject& object : scene.objects) {
@@ -60,7 +53,7 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     if (choice.pixel && tolerance[i] < 0x1p-30 * size) continue;
     std::optional<Profile> polyline;
     try {
-      // A number is held to the scene file's rule (io/curve_polyline.h). A footprint so wide that
+      // A number is held to the scene file's rule (io/curve_tolerance.h). A footprint so wide that
       // the polyline would lie on the axis (every object made of the profile spans about a pixel)
       // would make the objects vanish: they stay exact instead.
       polyline.emplace(choice.pixel ? Profile::fromCurve(*profile.spline, tolerance[i])
