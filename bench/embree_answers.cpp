@@ -11,6 +11,7 @@
 // `compare` reads two such files: revolve's answers must agree bit for bit (hit or miss, t, Ng,
 // primID, u, v, and occlusion); Embree's own primitives are Embree's kernels, which Embree 4 changed,
 // so their differences are counted and measured, not refused. Exit status 1 when revolve's differ.
+#include <revolve/embree_baselines.h>
 #include "ray_sets.h"
 #include "smooth_spline.h"
 #include "test_shapes.h"

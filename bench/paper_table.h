@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <cstdint>

@@ -1,4 +1,5 @@
 #include "report.h"
+#include <revolve/baselines.h>
 
 #include "io/text_files.h"
 #include "run_info.h"

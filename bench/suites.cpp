@@ -1,4 +1,5 @@
 #include "suites.h"
+#include <revolve/baselines.h>
 
 #include "ray_batches.h"
 #include "ray_sets.h"

@@ -1,4 +1,5 @@
 #include "traced_scene.h"
+#include <revolve/embree_baselines.h>
 
 #include "round_curve.h"
 

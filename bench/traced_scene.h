@@ -4,6 +4,7 @@
 #include "analytic_sphere.h"
 #include "smooth_profile.h"
 
+#include <revolve/embree_baselines.h>
 #include <revolve/revolve.h>
 
 #include <atomic>

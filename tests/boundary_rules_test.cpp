@@ -26,6 +26,7 @@
 
 #include "embree/embree_handles.h"
 
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

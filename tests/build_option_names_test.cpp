@@ -1,6 +1,7 @@
 // The names the tools take for search methods and shell kinds (core.h): every value's name reads
 // back as that value, the names are the ones the command lines document, and anything else,
 // including another case or a near miss, is refused.
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

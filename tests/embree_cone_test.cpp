@@ -7,6 +7,7 @@
 
 #include "embree/embree_handles.h"
 
+#include <revolve/embree_baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

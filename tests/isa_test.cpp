@@ -1,6 +1,7 @@
 // The per-ray code is compiled once per instruction set (src/util/isa.h): every copy must give the
 // same answers bit for bit, whichever one the CPU picks.
-#include "isa/query_kernels.h"
+#include <revolve/baselines.h>
+#include "shape/query_kernels.h"
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 

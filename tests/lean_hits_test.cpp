@@ -7,6 +7,7 @@
 #include "support/spline_profiles.h"
 #include "support/test_profiles.h"
 
+#include <revolve/embree_baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

@@ -12,6 +12,7 @@
 // - the depth is the longest root-to-leaf path, within the bound the pairwise grouping promises:
 //   ceil(log2 intervals) + 1 + ceil(log2 leaves a interval), far below the searches' 64-entry stacks.
 #include "mibit/mibit_tree.h"
+#include <revolve/baselines.h>
 #include "curve/monotone_parts.h"
 #include "support/hard_profiles.h"
 #include "support/spline_profiles.h"

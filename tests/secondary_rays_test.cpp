@@ -6,6 +6,7 @@
 #include "support/test_profiles.h"
 #include "support/test_scale.h"
 
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // continuity and end conditions), computed here apart from the library's conversion.
 #include "support/spline_profiles.h"
 
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <gtest/gtest.h>

@@ -1,5 +1,7 @@
 #include "scene/embree_scene.h"
 
+#include <revolve/embree_baselines.h>
+
 #include "embree/embree_rays.h"
 #include "embree/memory_check.h"
 #include "geometry/placement.h"

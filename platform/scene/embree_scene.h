@@ -16,6 +16,7 @@
 #include "geometry/placement.h"
 #include "io/scene_file.h"
 
+#include <revolve/baselines.h>
 #include <revolve/revolve.h>
 
 #include <atomic>

@@ -1,4 +1,5 @@
 #include "fuzz_checks.h"
+#include <revolve/baselines.h>
 
 #include "embree/tessellation.h"
 

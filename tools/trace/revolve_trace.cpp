@@ -10,6 +10,7 @@
 #include "io/curve_tolerance.h"
 #include "io/text_files.h"
 
+#include <revolve/embree_baselines.h>
 #include <revolve/revolve.h>
 
 #include <tbb/info.h>

@@ -231,41 +231,10 @@ class Spline {
 // ---------------------------------------------------------------------------------------------
 // Shape: a profile with its search structure, ready to trace.
 
-enum class Method {
-  mibit,   // the MIBIT tree: monotone intervals, uniform refinement, bounding shells, range search
-  linear,  // Wang's intersection with every segment in turn (the paper's linear baseline)
-  kajiya,  // Kajiya's strip tree (Ballard strips, conic-vs-strip tests)
-};
-
-enum class ShellKind {
-  cylinder,  // CY: annular cylinder shells r in [rmin, rmax], z in [zmin, zmax]
-  cone,      // TC: truncated-cone shells, a band parallel to the node's chord
-  hybrid,    // HY: per node the cheaper-to-test fit, by the paper's area / interval / factor-4 rule
-};
-
-// "mibit", "linear", "kajiya" and "cylinder", "cone", "hybrid" (the names the tools' --method,
-// --geometry and --shell take), and back; nothing for an unknown name.
-[[nodiscard]] const char* methodName(Method method) noexcept;
-[[nodiscard]] std::optional<Method> methodNamed(std::string_view name) noexcept;
-[[nodiscard]] const char* shellKindName(ShellKind shell) noexcept;
-[[nodiscard]] std::optional<ShellKind> shellKindNamed(std::string_view name) noexcept;
-
-struct BuildOptions {
-  Method method = Method::mibit;
-  // Cylinders by default: measured fastest here (README, Performance), their test needs no square
-  // root; the paper's hybrid and cone shells remain for its comparisons.
-  ShellKind shell = ShellKind::cylinder;
-  // MR refinement: leaves per monotone interval, each an equal share of its segments, searched by
-  // Wang's intersection in turn. 0 refines down to one segment a leaf.
-  std::uint32_t subdivisions = 0;
-  bool monotoneSplit = true;  // false: refine the whole profile as one interval (paper's "no split")
-  bool rangeSearch = true;    // false: intersect every node's shell (paper's "no range search")
-  // Lay the tree out for SIMD: leaves of up to 32 segments of a monotone interval whose segment
-  // shells are tested several at once, under nodes of up to 64 children (docs/design.md). Used
-  // with the defaults above (cylinder shells, monotone split, range search, subdivisions 0); false,
-  // or any other option, keeps the paper's binary tree. Both give the same hits bit for bit.
-  bool wideNodes = true;
-};
+// The MIBIT paper's switches (Baciu, Jia & Lam 2001: other searches, shell kinds, no monotone split,
+// no range search, the binary tree), for comparisons: revolve/baselines.h. A Shape built without
+// them is the fastest search measured here, the one an application wants.
+struct BuildOptions;
 
 // Counters of work done, per query or accumulated; counting costs nothing when not asked for.
 struct Stats {
@@ -288,13 +257,15 @@ const ShapeImpl& implOf(const Shape& shape) noexcept;
 
 class Shape {
  public:
-  explicit Shape(Profile profile, const BuildOptions& options = {});
+  explicit Shape(Profile profile);
+  Shape(Profile profile, const BuildOptions& options);  // revolve/baselines.h
   // A smooth profile traced exactly: the curve is split where r or z turns, into parts monotone in
   // both that take the place of segments in the search (each lies in the box of its ends), and each
   // part's surface is solved exactly at the leaves (README, How it works). Methods: mibit (every
   // shell kind, tree and option) and linear; Method::kajiya throws std::invalid_argument (its strips
   // bound polylines). A linear spline builds the polyline shape of Profile(curve.points()).
-  explicit Shape(Spline curve, const BuildOptions& options = {});
+  explicit Shape(Spline curve);
+  Shape(Spline curve, const BuildOptions& options);  // revolve/baselines.h
   ~Shape();
   Shape(Shape&&) noexcept;
   Shape& operator=(Shape&&) noexcept;

@@ -1,6 +1,6 @@
 #include "embree/callback_kernels.h"
 
-#include "isa/query_kernels.h"
+#include "shape/query_kernels.h"
 
 namespace revolve::detail {
 

@@ -1,4 +1,5 @@
 #include "embree/cone_curve.h"
+#include <revolve/embree_baselines.h>
 
 #include "profile/points.h"
 #include "util/format.h"

@@ -1,6 +1,7 @@
 // Embree objects: the user geometry, filters, point queries, the tessellated mesh and Embree's own
 // cone curve. The per-ray callbacks are in ray_callbacks.h (compiled per instruction set), and what
 // differs between Embree 3 and 4 in query_filters.h and revolve/embree_api.h.
+#include <revolve/embree_baselines.h>
 #include "embree/callback_kernels.h"
 #include "embree/cone_curve.h"
 #include "embree/payload.h"

@@ -1,4 +1,5 @@
 #include "embree/tessellation.h"
+#include <revolve/embree_baselines.h>
 
 #include <cmath>
 #include <numbers>

@@ -14,6 +14,7 @@
 // split" variant (where runs are not monotone), are stored.
 #pragma once
 
+#include <revolve/baselines.h>
 #include <revolve/core.h>
 
 #include "kernel/shell_tests.h"

@@ -1,4 +1,5 @@
 // The names of the search methods and shell kinds (core.h), one table each, read both ways.
+#include <revolve/baselines.h>
 #include <revolve/core.h>
 
 namespace revolve {

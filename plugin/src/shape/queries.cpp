@@ -2,8 +2,8 @@
 // isa/query_kernels.h), closest point.
 #include "shape/queries.h"
 #include "curve/part_distance.h"
-#include "isa/query_kernels.h"
 #include "mibit/best_first.h"
+#include "shape/query_kernels.h"
 #include "util/azimuth.h"
 
 #include <algorithm>

@@ -62,6 +62,8 @@ Stats& Stats::operator+=(const Stats& other) noexcept {
   return *this;
 }
 
+Shape::Shape(Profile profile) : Shape(std::move(profile), BuildOptions{}) {}
+
 Shape::Shape(Profile profile, const BuildOptions& options)
     : impl_(std::make_unique<detail::ShapeImpl>(std::move(profile), options)) {
   detail::ShapeImpl& impl = *impl_;
@@ -96,6 +98,8 @@ Shape::Shape(Profile profile, const BuildOptions& options)
   buildSearch(impl, options, {});
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
+
+Shape::Shape(Spline curve) : Shape(std::move(curve), BuildOptions{}) {}
 
 Shape::Shape(Spline curve, const BuildOptions& options) {
   if (curve.kind() == SplineKind::linear) {

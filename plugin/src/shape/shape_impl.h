@@ -1,6 +1,7 @@
 // What a built Shape holds. Internal: the Embree glue and the queries read it directly.
 #pragma once
 
+#include <revolve/baselines.h>
 #include <revolve/core.h>
 
 #include "kajiya/strip_tree.h"

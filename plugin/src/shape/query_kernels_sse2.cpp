@@ -1,6 +1,6 @@
 // The per-ray code for the x86-64 baseline (SSE2): built with the library's default flags.
 #define REVOLVE_ISA_NAME "sse2"
-#include "isa/query_kernels_impl.h"
+#include "shape/query_kernels_impl.h"
 
 namespace revolve::detail {
 extern const QueryKernels queryKernelsSse2;

@@ -2,7 +2,7 @@
 // (query_kernels_sse2.cpp, query_kernels_avx2.cpp), which defines its QueryKernels table from them.
 #pragma once
 
-#include "isa/query_kernels.h"
+#include "shape/query_kernels.h"
 #include "shape/shape_search.h"
 #include "shape/surface_hit.h"
 #include "util/isa.h"

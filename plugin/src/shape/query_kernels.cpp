@@ -1,4 +1,4 @@
-#include "isa/query_kernels.h"
+#include "shape/query_kernels.h"
 
 namespace revolve::detail {
 
