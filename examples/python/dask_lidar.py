@@ -3,7 +3,7 @@
 one PCD (or CSV) byte for byte what revolve-lidar writes on the same input.
 
     PYTHONPATH=build/python python3 examples/python/dask_lidar.py SCENE SENSOR POSES -o OUT.pcd \\
-        [--scheduler ADDRESS] [--workers N] [--shard-size K] [--pcd-data ascii|binary]
+        [--scheduler ADDRESS [--wait-for-workers SECONDS]] [--workers N] [--shard-size K] [--pcd-data ascii|binary]
 
 The poses are split into shards of K; each shard is traced on a worker (revolve.Lidar, the code
 revolve-lidar runs, with the shard's first pose number so that every beam draws its own noise) and
@@ -16,11 +16,15 @@ raises), and since a shard is written only once it is back, in order, nothing is
 Without --scheduler a LocalCluster of N worker processes runs here. With one (a scheduler started by
 `dask scheduler`, workers by `dask worker ADDRESS`), every worker must import revolve (built for its
 Python and machine) and read SCENE, the profile CSVs it names, and SENSOR at the same paths as here
-(a shared or copied folder); the poses travel with the shards.
+(a shared or copied folder); the poses travel with the shards. A scheduler with no worker yet is
+waited on for --wait-for-workers seconds (default 60; 0: not at all; inf: for ever), saying so on
+stderr; if none has joined by then, the script says so and exits with status 1, writing nothing.
 """
 
 import argparse
+import math
 import os
+import sys
 import time
 from collections import deque
 
@@ -54,6 +58,24 @@ def scan_to_file(client, scene, sensor, poses, output, shard_size, data="ascii",
     scan_file.commit()
 
 
+def wait_for_a_worker(client, address, seconds):
+    """Returns once the scheduler at `address` has a worker; says on stderr that it waits when it has
+    none, and exits (status 1, with a message) if none joins within `seconds` (inf: for ever)."""
+    if client.scheduler_info()["workers"]:
+        return
+    if seconds == 0:
+        sys.exit(f"dask_lidar: the scheduler at {address} has no workers (--wait-for-workers 0: not waiting); "
+                 f"start some with `dask worker {address}`")
+    limit = "" if math.isinf(seconds) else f" for up to {seconds:g} s"
+    print(f"dask_lidar: the scheduler at {address} has no workers yet; waiting for one{limit} (--wait-for-workers)",
+          file=sys.stderr, flush=True)
+    try:
+        client.wait_for_workers(1, timeout=None if math.isinf(seconds) else seconds)
+    except TimeoutError:
+        sys.exit(f"dask_lidar: no worker joined the scheduler at {address} within {seconds:g} s; start some with "
+                 f"`dask worker {address}`, or wait longer with --wait-for-workers SECONDS")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("scene", help="scene file (JSON, revolve-render's format)")
@@ -61,6 +83,9 @@ def main(argv=None):
     parser.add_argument("poses", help="robot poses (CSV, revolve-lidar's --poses)")
     parser.add_argument("-o", "--output", required=True, help="scan to write: .pcd or .csv")
     parser.add_argument("--scheduler", help="address of a running Dask scheduler (default: a LocalCluster here)")
+    parser.add_argument("--wait-for-workers", type=float, default=60, metavar="SECONDS",
+                        help="with --scheduler: how long to wait for a first worker when it has none (default 60; "
+                             "0: not at all; inf: for ever); then exit 1")
     parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes (default 2)")
     parser.add_argument("--shard-size", type=int, default=64, help="poses a shard (default 64)")
     parser.add_argument("--threads-per-worker", type=int, default=1, help="tracing threads a worker (default 1)")
@@ -68,6 +93,10 @@ def main(argv=None):
     args = parser.parse_args(argv)
     if args.workers < 1 or args.shard_size < 1 or args.threads_per_worker < 1:
         parser.error("--workers, --shard-size and --threads-per-worker take whole numbers >= 1")
+    if args.threads_per_worker > 1024:
+        parser.error(f"--threads-per-worker {args.threads_per_worker}: at most 1024, as every tool's --threads")
+    if not args.wait_for_workers >= 0:
+        parser.error(f"--wait-for-workers {args.wait_for_workers:g}: takes seconds >= 0 (inf: wait for ever)")
 
     from distributed import Client, LocalCluster
 
@@ -79,6 +108,8 @@ def main(argv=None):
         cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, dashboard_address=":0")
         client = Client(cluster)
     try:
+        if args.scheduler:
+            wait_for_a_worker(client, args.scheduler, args.wait_for_workers)
         ready = time.perf_counter()
         scan_to_file(client, args.scene, args.sensor, poses, args.output, args.shard_size, args.pcd_data, args.threads_per_worker,
                      inputs=[args.poses])

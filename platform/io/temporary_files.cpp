@@ -24,17 +24,26 @@ struct Slot {
 };
 Slot gSlots[kSlots];
 std::atomic<pid_t> gChild{0};
-std::atomic<int> gHeld{0};     // > 0: a commit (or a temporary's creation) is under way
-std::atomic<int> gPending{0};  // a signal that arrived meanwhile
+std::atomic<int> gHeld{0};                 // > 0: a commit (or a temporary's creation) is under way
+std::atomic<int> gPending{0};              // a signal that arrived meanwhile
+std::atomic<bool> gEndByTheSignal{false};  // removeTemporariesOnTermination: die of it, as by default
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free &&
               std::atomic<pid_t>::is_always_lock_free);
 
-[[noreturn]] void cleanUpAndExit(int signal) {
+// Removes what is registered, then ends the process: by _exit(128 + signal), as the tools report
+// it, or by the signal itself under its default action (re-raised, it is delivered as the handler
+// returns), as the program hosting us would have ended without the handler.
+void cleanUpAndEnd(int signal) {
   if (const pid_t child = gChild.load(); child > 0) kill(child, SIGTERM);
   for (Slot& slot : gSlots) {
     if (slot.live.load()) unlink(slot.path);
   }
-  _exit(128 + signal);
+  if (!gEndByTheSignal.load()) _exit(128 + signal);
+  struct sigaction byDefault {};
+  byDefault.sa_handler = SIG_DFL;
+  sigemptyset(&byDefault.sa_mask);
+  sigaction(signal, &byDefault, nullptr);
+  raise(signal);
 }
 
 extern "C" void onSignal(int signal) {
@@ -42,7 +51,7 @@ extern "C" void onSignal(int signal) {
     gPending.store(signal);
     return;
   }
-  cleanUpAndExit(signal);
+  cleanUpAndEnd(signal);
 }
 
 }  // namespace
@@ -51,7 +60,7 @@ HeldSignals::HeldSignals() { ++gHeld; }
 
 HeldSignals::~HeldSignals() {
   if (--gHeld == 0) {
-    if (const int signal = gPending.exchange(0); signal != 0) cleanUpAndExit(signal);
+    if (const int signal = gPending.exchange(0); signal != 0) cleanUpAndEnd(signal);
   }
 }
 
@@ -64,6 +73,21 @@ void removeTemporariesOnSignals() {
     action.sa_handler = onSignal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;  // a deferred signal must not make writes fail with EINTR
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+void removeTemporariesOnTermination() {
+  for (const int signal : {SIGTERM, SIGHUP}) {
+    struct sigaction current {};
+    sigaction(signal, nullptr, &current);
+    if (current.sa_handler == onSignal) continue;  // installed already (by us, or a tool's handler)
+    if (current.sa_handler != SIG_DFL) continue;   // the program's own handler, or ignored: theirs
+    gEndByTheSignal.store(true);
+    struct sigaction action {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
     sigaction(signal, &action, nullptr);
   }
 }

@@ -14,6 +14,12 @@ namespace revolve::io {
 // Installs the handler that removes registered temporaries and exits 128 + signal on SIGINT,
 // SIGTERM and SIGHUP. Idempotent; the tools call it first thing in main().
 void removeTemporariesOnSignals();
+// For code running inside another program (the Python package): on SIGTERM and SIGHUP, where the
+// program has left them at their default (ending the process), remove the registered temporaries
+// and end the process by the signal as the default would; SIGINT and any signal the program
+// handles itself are left alone (Python turns SIGINT into KeyboardInterrupt, whose unwinding
+// removes them). Idempotent; a tool's removeTemporariesOnSignals takes precedence.
+void removeTemporariesOnTermination();
 
 // A file path the signal handler removes if the process is interrupted while this lives. The
 // handler reads a fixed table (no allocation, no locks: it only calls unlink() and _exit()).

@@ -1,6 +1,8 @@
 """A profile swept into a triangle mesh: what a user of a triangle ray caster (Open3D's
 RaycastingScene, revolve's add_triangles) traces in place of the exact surface."""
 
+import operator
+
 import numpy as np
 
 
@@ -11,14 +13,24 @@ def tessellate(points, slices):
 
     Its distance from the surface is at most r_max (1 - cos(pi / slices)) for the circles plus the
     profile's own distance from the curve it samples."""
-    profile = np.asarray(points, dtype=np.float64)
+    try:
+        profile = np.asarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as error:  # a ragged list, strings, None: numpy says which
+        raise ValueError(f"points: not an (N, 2) array of numbers ({error})") from None
     if profile.ndim != 2 or profile.shape[1] != 2 or len(profile) < 2:
         raise ValueError(f"points: shape {profile.shape}; expected (N, 2) with N >= 2")
     if not np.all(np.isfinite(profile)) or np.any(profile[:, 0] < 0):
         raise ValueError("points: every r and z must be finite, and r >= 0")
-    if int(slices) != slices or slices < 3:
-        raise ValueError(f"slices = {slices!r}: must be a whole number, at least 3")
-    slices = int(slices)
+    if isinstance(slices, bool):
+        raise TypeError("slices: a bool; expected a whole number, at least 3")
+    try:
+        slices = operator.index(slices)
+    except TypeError:
+        raise TypeError(f"slices: a {type(slices).__name__}; expected a whole number, at least 3") from None
+    if slices < 3:
+        raise ValueError(f"slices = {slices}: must be a whole number, at least 3")
+    if slices > 1 << 24:
+        raise ValueError(f"slices = {slices}: at most 2^24 (16,777,216) steps about the axis")
     phi = 2 * np.pi * np.arange(slices) / slices
     r, z = profile[:, 0][:, None], profile[:, 1][:, None]
     vertices = np.stack([r * np.cos(phi), r * np.sin(phi), np.broadcast_to(z, (len(profile), slices))], axis=2)

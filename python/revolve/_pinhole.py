@@ -1,12 +1,21 @@
 """Pinhole camera rays with Open3D's conventions (RaycastingScene.create_rays_pinhole)."""
 
 import math
+import numbers
+import operator
 
 import numpy as np
 
+# The largest image: 2^28 rays (6 GiB of float32 rays), far beyond any camera, short of what
+# numpy could not allocate.
+_MAX_RAYS = 1 << 28
+
 
 def _matrix(value, name, shape):
-    array = np.asarray(value.numpy() if hasattr(value, "numpy") else value, dtype=np.float64)
+    try:
+        array = np.asarray(value.numpy() if hasattr(value, "numpy") else value, dtype=np.float64)
+    except (TypeError, ValueError) as error:
+        raise ValueError(f"{name}: not an array of numbers of shape {shape} ({error})") from None
     if array.shape != shape:
         raise ValueError(f"{name}: shape {array.shape}; expected {shape}")
     if not np.all(np.isfinite(array)):
@@ -15,9 +24,18 @@ def _matrix(value, name, shape):
 
 
 def _size(value, name):
-    if isinstance(value, bool) or int(value) != value or value < 1:
-        raise ValueError(f"{name} = {value!r}: must be a whole number of pixels, at least 1")
-    return int(value)
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}: a {type(value).__name__}; expected a whole number of pixels")
+    size = operator.index(value)
+    if not 1 <= size <= _MAX_RAYS:
+        raise ValueError(f"{name} = {size}: must lie in [1, 2^28]")
+    return size
+
+
+def _image(width, height):
+    if width * height > _MAX_RAYS:
+        raise ValueError(f"width_px x height_px = {width} x {height}: more than 2^28 rays (6 GiB of float32 rays)")
+    return width, height
 
 
 def _rays_from_matrices(intrinsic, extrinsic, width, height):
@@ -58,15 +76,19 @@ def create_rays_pinhole(*args, **kwargs):
             raise TypeError(f"create_rays_pinhole: expected {', '.join(names_matrices)}")
         intrinsic = _matrix(bound["intrinsic_matrix"], "intrinsic_matrix", (3, 3))
         extrinsic = _matrix(bound["extrinsic_matrix"], "extrinsic_matrix", (4, 4))
-        return _rays_from_matrices(intrinsic, extrinsic, _size(bound["width_px"], "width_px"), _size(bound["height_px"], "height_px"))
+        width, height = _image(_size(bound["width_px"], "width_px"), _size(bound["height_px"], "height_px"))
+        return _rays_from_matrices(intrinsic, extrinsic, width, height)
     bound = dict(zip(names_view, args), **kwargs)
     missing = [n for n in names_view if n not in bound]
     if missing or len(bound) != 6:
         raise TypeError(f"create_rays_pinhole: expected ({', '.join(names_matrices)}) or ({', '.join(names_view)})")
-    fov = float(bound["fov_deg"])
+    fov = bound["fov_deg"]
+    if isinstance(fov, bool) or not isinstance(fov, numbers.Real):
+        raise TypeError(f"fov_deg: a {type(fov).__name__}; expected a number of degrees")
+    fov = float(fov)
     if not 0 < fov < 180:
         raise ValueError(f"fov_deg = {fov!r}: must lie in (0, 180)")
-    width, height = _size(bound["width_px"], "width_px"), _size(bound["height_px"], "height_px")
+    width, height = _image(_size(bound["width_px"], "width_px"), _size(bound["height_px"], "height_px"))
     center = _matrix(bound["center"], "center", (3,))
     eye = _matrix(bound["eye"], "eye", (3,))
     up = _matrix(bound["up"], "up", (3,))

@@ -9,6 +9,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cstring>
+
 namespace revolve::python {
 namespace {
 
@@ -35,6 +37,16 @@ const char* ruleName(ProfileError::Rule rule) {
   }
   return "unknown";
 }
+
+// A message as a Python str: a file's bytes quoted in it need not be UTF-8, and a message that
+// fails to decode would reach the user empty.
+py::str messageText(const char* message) {
+  PyObject* text = PyUnicode_DecodeUTF8(message, Py_ssize_t(std::strlen(message)), "replace");
+  if (text == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(text);
+}
+
+void setError(PyObject* type, const char* message) { PyErr_SetObject(type, messageText(message).ptr()); }
 
 void warn(const std::string& message) {
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 2) != 0) throw py::error_already_set();
@@ -64,16 +76,20 @@ PYBIND11_MODULE(_revolve, m) {
     try {
       if (pointer) std::rethrow_exception(pointer);
     } catch (const ProfileError& error) {
-      py::object instance = py::reinterpret_borrow<py::object>(profileError.ptr())(error.what());
+      py::object instance = py::reinterpret_borrow<py::object>(profileError.ptr())(python::messageText(error.what()));
       instance.attr("index") = error.index();
       instance.attr("rule") = python::ruleName(error.rule());
       PyErr_SetObject(profileError.ptr(), instance.ptr());
     } catch (const io::SceneError& error) {
-      PyErr_SetString(PyExc_ValueError, error.what());
+      python::setError(PyExc_ValueError, error.what());
     } catch (const io::SensorError& error) {
-      PyErr_SetString(PyExc_ValueError, error.what());
+      python::setError(PyExc_ValueError, error.what());
     } catch (const io::InputError& error) {
-      PyErr_SetString(PyExc_ValueError, error.what());
+      python::setError(PyExc_ValueError, error.what());
+    } catch (const py::value_error& error) {  // the bindings' own, their messages made printable too
+      python::setError(PyExc_ValueError, error.what());
+    } catch (const py::type_error& error) {
+      python::setError(PyExc_TypeError, error.what());
     }
   });
 

@@ -8,21 +8,28 @@ namespace {
 
 std::string typeName(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
 
-// An ndarray for `object`: itself, or the .numpy() of a tensor; TypeError otherwise.
-py::array asArray(py::handle object, const char* name, const std::string& expected) {
+}  // namespace
+
+py::array arrayArgument(py::handle object, const char* name, const std::string& expected) {
   if (py::isinstance<py::array>(object)) return py::reinterpret_borrow<py::array>(object);
   if (!py::isinstance<py::str>(object) && py::hasattr(object, "numpy")) {
     py::object converted = object.attr("numpy")();
     if (py::isinstance<py::array>(converted)) return py::reinterpret_steal<py::array>(converted.release());
   }
   if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object)) {
-    // Lists are fine where the values are copied anyway; numpy decides their dtype.
-    return py::array::ensure(object);
+    // Lists are fine where the values are copied anyway; numpy decides their dtype. A ragged list
+    // (rows of different lengths) makes no array: numpy says so, and nothing is read.
+    try {
+      return py::module_::import("numpy").attr("asarray")(object);
+    } catch (py::error_already_set& error) {
+      const bool ragged = error.matches(PyExc_ValueError);
+      throw py::value_error(std::string(name) + ": " +
+                            (ragged ? "a ragged list (its rows differ in length)" : "a list numpy makes no array of") +
+                            "; expected " + expected);
+    }
   }
   throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected);
 }
-
-}  // namespace
 
 std::string shapeText(const py::array& array) {
   std::string text = "(";
@@ -36,10 +43,18 @@ QueryArray queryArray(py::handle object, const char* name, py::ssize_t width, co
     throw py::type_error(std::string(name) + ": a " + typeName(object) + "; expected " + expected + " (numpy.asarray(" +
                          name + ", dtype=numpy.float32))");
   }
-  py::array array = asArray(object, name, expected);
-  if (!array.dtype().is(py::dtype::of<float>())) {
-    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
+  py::array array = arrayArgument(object, name, expected);
+  // float32 whatever dtype object says so (numpy's own, an unpickled one, '=f4'), read in place in
+  // this machine's byte order: the other order would read as garbage.
+  const py::dtype dtype = array.dtype();
+  if (dtype.kind() != 'f' || dtype.itemsize() != 4) {
+    throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(py::handle(dtype))) +
                          "; expected float32, as Open3D's RaycastingScene (" + name + ".astype(numpy.float32))");
+  }
+  if (!dtype.attr("isnative").cast<bool>()) {
+    throw py::type_error(std::string(name) + ": float32 in the other byte order (" +
+                         std::string(py::str(dtype.attr("str"))) + "); revolve reads " + name +
+                         " in place, in this machine's byte order: pass " + name + ".astype(numpy.float32)");
   }
   if (array.ndim() < 1 || array.shape(array.ndim() - 1) != width) {
     throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; the last axis must hold " +
@@ -72,7 +87,7 @@ py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_
                                  py::ssize_t minRows, bool requireFinite) {
   const std::string shape =
       "(" + (rows >= 0 ? std::to_string(rows) : std::string("N")) + ", " + std::to_string(columns) + ")";
-  py::array array = asArray(object, name, "a numpy array of shape " + shape);
+  py::array array = arrayArgument(object, name, "a numpy array of shape " + shape);
   const char kind = array.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u') {
     throw py::type_error(std::string(name) + ": dtype " + std::string(py::str(array.dtype())) +
@@ -84,7 +99,10 @@ py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_
                           (minRows > 0 ? " with at least " + std::to_string(minRows) + " rows" : std::string()));
   }
   auto copy = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-  if (!copy) throw py::error_already_set();
+  if (!copy) {
+    PyErr_Clear();
+    throw py::value_error(std::string(name) + ": cannot be read as numbers of double precision");
+  }
   py::array_t<double> result(std::vector<py::ssize_t>{copy.shape(0), copy.shape(1)});
   std::copy(copy.data(), copy.data() + copy.size(), result.mutable_data());
   const double* values = result.data();

@@ -16,6 +16,11 @@ namespace revolve::python {
 
 namespace py = pybind11;
 
+// `object` as an ndarray: an array itself, a tensor's .numpy(), or what numpy makes of a list or
+// tuple; a ValueError naming `name` for a list numpy makes none of (a ragged one), a TypeError for
+// anything else. `expected` says what was wanted, for the message.
+py::array arrayArgument(py::handle object, const char* name, const std::string& expected);
+
 struct QueryArray {
   py::array array;  // holds the data alive
   const float* data = nullptr;

@@ -1,6 +1,7 @@
 // RaycastingScene for Python: Open3D's method names, argument names, result keys, shapes and
 // dtypes (open3d.t.geometry.RaycastingScene, 0.19), numpy arrays in and out, the GIL released
 // while the queries run.
+#include "arguments.h"
 #include "bindings.h"
 #include "numpy_inputs.h"
 #include "raycasting_scene.h"
@@ -35,16 +36,16 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
   const py::array_t<double> array = copiedMatrix(pointsObject, "points", -1, 2, 0, false);
   std::vector<Point2> points(std::size_t(array.shape(0)));
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {array.at(i, 0), array.at(i, 1)};
-  std::optional<double> tolerance;
-  if (!toleranceObject.is_none()) {
-    const double value = toleranceObject.cast<double>();
-    if (const std::optional<std::string> fault = io::toleranceFault(value, std::string(py::repr(toleranceObject)))) {
+  const std::optional<std::string> spline = optionalText(splineObject, "spline");
+  const std::optional<double> tolerance = optionalReal(toleranceObject, "tolerance");
+  if (tolerance) {
+    if (const std::optional<std::string> fault =
+            io::toleranceFault(*tolerance, std::string(py::repr(toleranceObject)))) {
       throw py::value_error("tolerance: " + *fault);
     }
-    tolerance = value;
   }
   try {
-    if (splineObject.is_none()) {
+    if (!spline) {
       if (tolerance) {
         throw py::value_error(
             "tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
@@ -54,18 +55,21 @@ Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toler
       warnAbout(profile.warnings(), "points");
       return Shape(std::move(profile));
     }
-    const std::string name = splineObject.cast<std::string>();
-    const std::optional<SplineKind> kind = splineKindNamed(name);
+    const std::optional<SplineKind> kind = splineKindNamed(*spline);
     if (!kind) {
-      throw py::value_error("spline = \"" + name +
-                            "\": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
+      throw py::value_error("spline = \"" + *spline + "\"" +
+                            ": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
     }
     Spline curve(*kind, points);
     warnAbout(curve.warnings(), "points");
-    if (tolerance) return Shape(Profile::fromCurve(curve, *tolerance));
+    // A tolerance is held to the rule every tool applies: one that collapses the curve onto the
+    // axis, a surface nothing hits, is refused (io/curve_tolerance.h).
+    if (tolerance) return Shape(io::curvePolyline(curve, *tolerance));
     return Shape(std::move(curve));
   } catch (const ProfileError& error) {
     throw ProfileError(error.rule(), error.index(), std::string("points: ") + error.what());
+  } catch (const std::invalid_argument& error) {  // the tolerance, for this curve
+    throw py::value_error(std::string("tolerance: ") + error.what());
   }
 }
 
@@ -95,10 +99,10 @@ app::Placement placementFrom(py::handle transform, const Shape& shape) {
 
 std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle trianglesObject) {
   const py::array_t<double> vertices = copiedMatrix(verticesObject, "vertex_positions", -1, 3);
-  py::array triangles = py::isinstance<py::array>(trianglesObject) ? py::reinterpret_borrow<py::array>(trianglesObject)
-                                                                   : py::array::ensure(trianglesObject);
-  if (!triangles || (triangles.dtype().kind() != 'i' && triangles.dtype().kind() != 'u')) {
-    throw py::type_error("triangle_indices: expected an integer array of shape (M, 3) (Open3D takes uint32)");
+  const py::array triangles = arrayArgument(trianglesObject, "triangle_indices", "an integer array of shape (M, 3)");
+  if (triangles.dtype().kind() != 'i' && triangles.dtype().kind() != 'u') {
+    throw py::type_error("triangle_indices: dtype " + std::string(py::str(triangles.dtype())) +
+                         "; expected an integer array of shape (M, 3) (Open3D takes uint32)");
   }
   if (triangles.ndim() != 2 || triangles.shape(1) != 3) {
     throw py::value_error("triangle_indices: shape " + shapeText(triangles) + "; expected (M, 3)");
@@ -139,7 +143,8 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
   return scene.addTriangles(positions, corners);
 }
 
-std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
+std::vector<std::uint32_t> load(Scene& scene, py::handle pathObject) {
+  const std::string path = pathArgument(pathObject, "path");
   const io::SceneDescription description = io::readScene(path);
   for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
   warnAbout(scene::degenerateObjectWarnings(description, false));
@@ -178,8 +183,9 @@ std::vector<std::uint32_t> load(Scene& scene, const std::string& path) {
   return ids;
 }
 
-py::dict castRays(Scene& scene, py::handle rays, int threads) {
+py::dict castRays(Scene& scene, py::handle rays, py::handle nthreads) {
   const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
   auto t = newArray<float>(in.leadingShape);
   auto geometry = newArray<std::uint32_t>(in.leadingShape), primitive = newArray<std::uint32_t>(in.leadingShape);
   auto uv = newArray<float>(in.leadingShape, 2), normal = newArray<float>(in.leadingShape, 3);
@@ -200,8 +206,11 @@ py::dict castRays(Scene& scene, py::handle rays, int threads) {
   return result;
 }
 
-py::array testOcclusions(Scene& scene, py::handle rays, double tnear, double tfar, int threads) {
+py::array testOcclusions(Scene& scene, py::handle rays, py::handle tnearObject, py::handle tfarObject,
+                         py::handle nthreads) {
   const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  const double tnear = realArgument(tnearObject, "tnear"), tfar = realArgument(tfarObject, "tfar");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
   if (!(tnear >= 0 && tnear <= tfar)) {
     throw py::value_error("tnear = " + std::to_string(tnear) + ", tfar = " + std::to_string(tfar) +
                           ": need 0 <= tnear <= tfar");
@@ -217,8 +226,9 @@ py::array testOcclusions(Scene& scene, py::handle rays, double tnear, double tfa
   return occluded;
 }
 
-py::array countIntersections(Scene& scene, py::handle rays, int threads) {
+py::array countIntersections(Scene& scene, py::handle rays, py::handle nthreads) {
   const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
   auto counts = newArray<std::int32_t>(in.leadingShape);
   std::int32_t* out = counts.mutable_data();
   std::optional<std::size_t> refused;
@@ -235,8 +245,10 @@ struct ClosestArrays {
   py::array_t<std::uint32_t> geometry, primitive;
 };
 
-ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, bool signedDistance, int threads) {
+ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, bool signedDistance,
+                      py::handle nthreads) {
   const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
   ClosestArrays a{newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape, 2),
                   newArray<float>(in.leadingShape, 3),      newArray<float>(in.leadingShape),
                   newArray<std::uint32_t>(in.leadingShape), newArray<std::uint32_t>(in.leadingShape)};
@@ -253,8 +265,9 @@ ClosestArrays closest(Scene& scene, const char* method, py::handle queryPoints, 
   return a;
 }
 
-py::array occupancy(Scene& scene, py::handle queryPoints, int threads) {
+py::array occupancy(Scene& scene, py::handle queryPoints, py::handle nthreads) {
   const QueryArray in = queryArray(queryPoints, "query_points", 3, "x, y, z");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
   auto inside = newArray<float>(in.leadingShape);
   float* out = inside.mutable_data();
   std::optional<std::size_t> refused;
@@ -268,8 +281,9 @@ py::array occupancy(Scene& scene, py::handle queryPoints, int threads) {
   return inside;
 }
 
-void checkSamples(int nsamples) {
-  if (nsamples < 1) throw py::value_error("nsamples = " + std::to_string(nsamples) + ": must be at least 1");
+// Open3D's ray vote count: accepted (at least 1), not needed.
+void checkSamples(py::handle nsamples) {
+  (void)integerArgument(nsamples, "nsamples", 1, std::numeric_limits<std::int32_t>::max());
 }
 
 }  // namespace
@@ -304,16 +318,16 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
             "Adds a triangle mesh ((N, 3) vertices, (M, 3) vertex indices); returns its geometry id.");
   scene.def("load", &load, py::arg("path"),
             "Adds a scene file's objects (each a geometry, in order) and its quads (one mesh); returns their ids.");
-  scene.def("cast_rays", &castRays, py::arg("rays"), py::arg("nthreads") = 0,
+  scene.def("cast_rays", &castRays, py::arg("rays"), py::arg("nthreads") = py::int_(0),
             "The first hit of each ray: dict of t_hit, geometry_ids, primitive_ids, primitive_uvs, primitive_normals.");
-  scene.def("test_occlusions", &testOcclusions, py::arg("rays"), py::arg("tnear") = 0.0,
-            py::arg("tfar") = std::numeric_limits<double>::infinity(), py::arg("nthreads") = 0,
+  scene.def("test_occlusions", &testOcclusions, py::arg("rays"), py::arg("tnear") = py::float_(0.0),
+            py::arg("tfar") = py::float_(std::numeric_limits<double>::infinity()), py::arg("nthreads") = py::int_(0),
             "Whether each ray hits anything with tnear <= t <= tfar (bool array).");
-  scene.def("count_intersections", &countIntersections, py::arg("rays"), py::arg("nthreads") = 0,
+  scene.def("count_intersections", &countIntersections, py::arg("rays"), py::arg("nthreads") = py::int_(0),
             "The number of surface crossings along each ray (t >= 0), int32 array.");
   scene.def(
       "compute_closest_points",
-      [](Scene& s, py::handle points, int threads) {
+      [](Scene& s, py::handle points, py::handle threads) {
         const ClosestArrays a = closest(s, "compute_closest_points", points, false, threads);
         py::dict result;
         result["points"] = a.points;
@@ -323,30 +337,30 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
         result["primitive_normals"] = a.normal;
         return result;
       },
-      py::arg("query_points"), py::arg("nthreads") = 0,
+      py::arg("query_points"), py::arg("nthreads") = py::int_(0),
       "Exact closest surface points: dict of points, geometry_ids, primitive_ids, primitive_uvs, primitive_normals.");
   scene.def(
       "compute_distance",
-      [](Scene& s, py::handle points, int threads) {
+      [](Scene& s, py::handle points, py::handle threads) {
         return closest(s, "compute_distance", points, false, threads).distance;
       },
-      py::arg("query_points"), py::arg("nthreads") = 0, "Exact distance to the nearest surface (float32).");
+      py::arg("query_points"), py::arg("nthreads") = py::int_(0), "Exact distance to the nearest surface (float32).");
   scene.def(
       "compute_signed_distance",
-      [](Scene& s, py::handle points, int threads, int nsamples) {
+      [](Scene& s, py::handle points, py::handle threads, py::handle nsamples) {
         checkSamples(nsamples);
         return closest(s, "compute_signed_distance", points, true, threads).distance;
       },
-      py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
+      py::arg("query_points"), py::arg("nthreads") = py::int_(0), py::arg("nsamples") = py::int_(1),
       "Exact distance, negative inside a closed profile's solid (decided from the profile; nsamples, Open3D's ray "
       "vote, is not needed).");
   scene.def(
       "compute_occupancy",
-      [](Scene& s, py::handle points, int threads, int nsamples) {
+      [](Scene& s, py::handle points, py::handle threads, py::handle nsamples) {
         checkSamples(nsamples);
         return occupancy(s, points, threads);
       },
-      py::arg("query_points"), py::arg("nthreads") = 0, py::arg("nsamples") = 1,
+      py::arg("query_points"), py::arg("nthreads") = py::int_(0), py::arg("nsamples") = py::int_(1),
       "1 inside a closed profile's solid, 0 outside (float32), decided from the profile.");
   scene.def("geometry_count", &Scene::geometryCount, "The number of geometries added.");
   scene.def("memory_bytes", &Scene::memoryBytes,

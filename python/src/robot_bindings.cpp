@@ -2,6 +2,7 @@
 // range-finder of revolve-lidar (Lidar) and its scan files (ScanFile), and revolve-clearance's
 // cylinder clearance. The same library code the tools run (platform/robot, platform/io, platform/scene), so
 // that the answers are theirs bit for bit.
+#include "arguments.h"
 #include "bindings.h"
 #include "numpy_inputs.h"
 
@@ -11,6 +12,7 @@
 #include "io/scan_files.h"
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
+#include "io/temporary_files.h"
 #include "robot/clearance_map.h"
 #include "robot/lidar.h"
 #include "scene/degenerate_objects.h"
@@ -33,8 +35,6 @@
 
 namespace revolve::python {
 namespace {
-
-std::string pathOf(py::handle path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
 
 // The build settings, checked before a scene file is read.
 void checkSettings(const std::string& geometry, std::uint32_t slices) {
@@ -74,18 +74,19 @@ struct ToolScene {
 
 std::shared_ptr<ToolScene> sceneOf(py::handle scene) {
   if (py::isinstance<ToolScene>(scene)) return scene.cast<std::shared_ptr<ToolScene>>();
-  return std::make_shared<ToolScene>(pathOf(scene), "mibit", 64);
+  return std::make_shared<ToolScene>(pathArgument(scene, "scene"), "mibit", 64);
 }
 
 // Poses from a POSES.csv path (the tools' reader) or an (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw]
 // array, checked by the reader's rules.
 std::vector<io::RobotPose> posesOf(py::handle poses) {
-  if (py::isinstance<py::str>(poses) || py::hasattr(poses, "__fspath__")) return io::readPosesCsv(pathOf(poses));
-  py::array array =
-      py::isinstance<py::array>(poses) ? py::reinterpret_borrow<py::array>(poses) : py::array::ensure(poses);
-  const py::ssize_t columns = array && array.ndim() == 2 ? array.shape(1) : 0;
+  if (py::isinstance<py::str>(poses) || py::isinstance<py::bytes>(poses) || py::hasattr(poses, "__fspath__")) {
+    return io::readPosesCsv(pathArgument(poses, "poses"));
+  }
+  const py::array array = arrayArgument(poses, "poses", "an (N, 3) or (N, 4) array of poses, or a POSES.csv path");
+  const py::ssize_t columns = array.ndim() == 2 ? array.shape(1) : 0;
   if (columns != 3 && columns != 4) {
-    throw py::value_error("poses: shape " + (array ? shapeText(array) : std::string("?")) +
+    throw py::value_error("poses: shape " + shapeText(array) +
                           "; expected (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv path");
   }
   const py::array_t<double> values = copiedMatrix(array, "poses", -1, columns, 1);
@@ -119,12 +120,69 @@ struct PySensor {
   io::SensorDescription sensor;
 };
 
+// A sensor dict as the sensor file's JSON text, value by value: numpy scalars and arrays stand for
+// numbers and lists; a value JSON cannot hold (nan, inf, an object of another kind) is refused
+// naming its key path, as the sensor file's reader names a bad value's.
+void appendJson(std::string& out, py::handle value, const std::string& path) {
+  const py::module_ numpy = py::module_::import("numpy");
+  const auto where = [&] { return "sensor: " + (path.empty() ? std::string("the sensor") : path); };
+  if (py::isinstance<py::array>(value)) return appendJson(out, value.attr("tolist")(), path);
+  if (py::isinstance(value, numpy.attr("generic"))) return appendJson(out, value.attr("item")(), path);
+  if (py::isinstance<py::dict>(value)) {
+    out += '{';
+    bool first = true;
+    for (const auto& [key, item] : py::reinterpret_borrow<py::dict>(value)) {
+      if (!py::isinstance<py::str>(key)) {
+        throw py::type_error(where() + ": a key " + std::string(py::repr(key)) + "; keys are str");
+      }
+      const std::string name = py::str(key);
+      if (!first) out += ',';
+      first = false;
+      out += std::string(py::str(py::module_::import("json").attr("dumps")(key))) + ':';
+      appendJson(out, item, path.empty() ? name : path + "." + name);
+    }
+    out += '}';
+    return;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    out += '[';
+    std::size_t i = 0;
+    for (const py::handle item : value) {
+      if (i > 0) out += ',';
+      appendJson(out, item, path + "[" + std::to_string(i++) + "]");
+    }
+    out += ']';
+    return;
+  }
+  if (value.is_none()) {
+    out += "null";
+  } else if (PyBool_Check(value.ptr())) {
+    out += value.ptr() == Py_True ? "true" : "false";
+  } else if (PyLong_Check(value.ptr())) {
+    out += std::string(py::str(value));
+  } else if (PyFloat_Check(value.ptr())) {
+    const double x = value.cast<double>();
+    if (!std::isfinite(x)) throw py::value_error(where() + " = " + std::string(py::repr(value)) + ": not finite");
+    out += std::string(py::repr(value));
+  } else if (py::isinstance<py::str>(value)) {
+    out += std::string(py::str(py::module_::import("json").attr("dumps")(value)));
+  } else {
+    throw py::type_error(where() + ": a " + std::string(py::str(py::type::handle_of(value).attr("__name__"))) +
+                         "; a sensor holds numbers, strings, lists and dicts");
+  }
+}
+
 io::SensorDescription sensorOf(py::handle sensor) {
   if (py::isinstance<py::dict>(sensor)) {
-    const std::string text = py::str(py::module_::import("json").attr("dumps")(sensor));
+    std::string text;
+    appendJson(text, sensor, "");
     return io::parseSensor(text, "sensor");
   }
-  return io::readSensor(pathOf(sensor));
+  if (!py::isinstance<py::str>(sensor) && !py::isinstance<py::bytes>(sensor) && !py::hasattr(sensor, "__fspath__")) {
+    throw py::type_error("sensor: a " + std::string(py::str(py::type::handle_of(sensor).attr("__name__"))) +
+                         "; expected a sensor file's path or its JSON as a dict");
+  }
+  return io::readSensor(pathArgument(sensor, "sensor"));
 }
 
 // A scan's returns in numpy arrays shaped (poses, rings, azimuths), written block by block.
@@ -140,11 +198,13 @@ ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimu
           newArray<std::uint16_t>(shape)};
 }
 
-py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, int threads,
-              std::uint64_t firstPose) {
+py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, py::handle threadsObject,
+              py::handle firstPoseObject) {
+  const int threads = threadsArgument(threadsObject, "threads", false);
+  // A scan holds fewer than 2^31 beams: no pose number beyond that has a beam of its own.
+  const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, io::kMaxScanBeams);
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
-  if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
   const robot::Lidar lidar(*scene->built, self.sensor);
   const io::ScanLayout layout = lidar.layout(poses.size());
   const std::size_t rings = layout.rings(), azimuths = layout.azimuths.size();
@@ -194,6 +254,9 @@ struct ScanFile {
   ScanFile(const std::string& file, const PySensor& sensor, std::uint64_t poses, const std::string& data,
            const std::vector<std::string>& inputs)
       : path(file) {
+    // SIGTERM or SIGHUP while it is written removes its temporary, as revolve-lidar's does
+    // (SIGINT raises KeyboardInterrupt, whose unwinding removes it).
+    io::removeTemporariesOnTermination();
     if (data != "ascii" && data != "binary")
       throw py::value_error("data = \"" + data + "\": expected \"ascii\" or \"binary\"");
     const io::ScanFormat format = io::scanFormatFor(path);
@@ -203,7 +266,8 @@ struct ScanFile {
     for (const double a : io::fanAngles(sensor.sensor.horizontal)) layout.azimuths.push_back(a);
     layout.elevations = sensor.sensor.elevations;
     layout.poses = poses;
-    if (poses == 0 || layout.beamCount() > io::kMaxScanBeams) {
+    // Compared by division: poses x beams would wrap a 64-bit count (2^54 poses of 1,024 beams is 0).
+    if (poses == 0 || poses > io::kMaxScanBeams / layout.beamsPerPose()) {
       throw py::value_error("poses = " + std::to_string(poses) + " x " + std::to_string(layout.beamsPerPose()) +
                             " beams: a scan holds 1 to 2^31 - 1 beams (PCD's point count, as PCL indexes it)");
     }
@@ -212,21 +276,35 @@ struct ScanFile {
     writer.emplace(outputs.stream(path), format, data == "binary" ? io::PcdData::binary : io::PcdData::ascii, layout);
   }
 
-  void write(std::uint64_t firstPose, const py::dict& scan) {
+  void write(py::handle firstPoseObject, py::handle scanObject) {
     if (committed) throw py::value_error(path + ": already committed");
+    const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, layout.poses);
+    const std::string expected = "a scan dict of Lidar.scan for this sensor (ranges (P, " +
+                                 std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
+                                 "), points, ids)";
+    if (!py::isinstance<py::dict>(scanObject)) {
+      throw py::type_error("scan: a " + std::string(py::str(py::type::handle_of(scanObject).attr("__name__"))) +
+                           "; expected " + expected);
+    }
+    const py::dict scan = py::reinterpret_borrow<py::dict>(scanObject);
+    for (const char* key : {"ranges", "points", "ids"}) {
+      if (!scan.contains(key)) throw py::value_error(std::string("scan: no \"") + key + "\"; expected " + expected);
+    }
+    const auto array = [&](const char* key) {
+      return arrayArgument(scan[key], (std::string("scan[\"") + key + "\"]").c_str(), expected);
+    };
     if (firstPose != nextPose) {
       throw py::value_error(path + ": poses are written in order: expected pose " + std::to_string(nextPose) +
                             ", got first_pose = " + std::to_string(firstPose));
     }
-    const auto ranges = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["ranges"]);
-    const auto points = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(scan["points"]);
-    const auto ids = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(scan["ids"]);
+    const auto ranges = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array("ranges"));
+    const auto points = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array("points"));
+    const auto ids = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(array("ids"));
+    if (!ranges || !points || !ids) PyErr_Clear();
     const std::size_t perPose = layout.beamsPerPose();
     if (!ranges || !points || !ids || ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
         points.size() != 3 * ranges.size() || ids.size() != ranges.size()) {
-      throw py::value_error(path + ": a scan dict of Lidar.scan for this sensor is expected (ranges (P, " +
-                            std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
-                            "), points, ids)");
+      throw py::value_error(path + ": " + expected + " is expected");
     }
     const std::uint64_t poses = std::uint64_t(ranges.shape(0));
     if (firstPose + poses > layout.poses) {
@@ -254,8 +332,13 @@ struct ScanFile {
   }
 };
 
-py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, double radius, double zMin, double zMax,
-                           std::optional<double> ground, int threads) {
+py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, py::handle radiusObject,
+                           py::handle zMinObject, py::handle zMaxObject, py::handle groundObject,
+                           py::handle threadsObject) {
+  const double radius = realArgument(radiusObject, "radius");
+  const double zMin = realArgument(zMinObject, "z_min"), zMax = realArgument(zMaxObject, "z_max");
+  const std::optional<double> ground = optionalReal(groundObject, "ground");
+  const int threads = threadsArgument(threadsObject, "threads", false);
   if (!(radius > 0 && std::isfinite(radius)))
     throw py::value_error("radius = " + std::to_string(radius) + ": must be positive and finite");
   if (!(std::isfinite(zMin) && std::isfinite(zMax) && zMin < zMax)) {
@@ -263,7 +346,6 @@ py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, doubl
                           ": need finite z_min < z_max");
   }
   if (ground && !std::isfinite(*ground)) throw py::value_error("ground: must be a finite height (or None)");
-  if (threads < 0) throw py::value_error("threads = " + std::to_string(threads) + ": must be 0 (all) or more");
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
   const robot::ClearanceMap& map = scene->clearanceMap(ground.value_or(-INFINITY));
@@ -307,10 +389,11 @@ void bindRobot(py::module_& m) {
 
 geometry: "mibit" traces every surface of revolution exactly; "mesh" tessellates each into `slices`
 azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
-      .def(py::init([](py::handle path, const std::string& geometry, std::uint32_t slices) {
-             return std::make_shared<ToolScene>(pathOf(path), geometry, slices);
+      .def(py::init([](py::handle path, py::handle geometry, py::handle slices) {
+             return std::make_shared<ToolScene>(pathArgument(path, "path"), textArgument(geometry, "geometry"),
+                                                std::uint32_t(unsignedArgument(slices, "slices", 3, 1u << 16)));
            }),
-           py::arg("path"), py::arg("geometry") = "mibit", py::arg("slices") = 64)
+           py::arg("path"), py::arg("geometry") = py::str("mibit"), py::arg("slices") = py::int_(64))
       .def_property_readonly("path", [](const ToolScene& s) { return s.path; })
       .def_property_readonly("object_count", [](const ToolScene& s) { return s.description.objects.size(); })
       .def_property_readonly("quad_count", [](const ToolScene& s) { return s.description.quads.size(); });
@@ -324,7 +407,8 @@ shaped (poses, rings, azimuths): ranges (float32, inf for no return), points (fl
 world frame, nan for no return), rings (uint16) and ids (int32: the scene's object index, quads
 after the objects, -1 for no return), bit for bit revolve-lidar's.)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
-      .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = 0, py::arg("first_pose") = 0,
+      .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
+           py::arg("first_pose") = py::int_(0),
            "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv "
            "path; "
            "first_pose: the number of poses[0] in a scan traced in parts (its noise is that pose's).")
@@ -347,20 +431,34 @@ after the objects, -1 for no return), bit for bit revolve-lidar's.)")
 
 The file goes to a temporary beside it, renamed into place by commit() once every pose is written;
 dropped (or a failed run) it leaves nothing. `inputs` name files it must not overwrite.)")
-      .def(py::init([](py::handle path, const PySensor& sensor, std::uint64_t poses, const std::string& data,
-                       const std::vector<py::object>& inputs) {
+      .def(py::init([](py::handle path, py::handle lidar, py::handle poses, py::handle data, py::handle inputs) {
+             const std::string file = pathArgument(path, "path");
+             if (!py::isinstance<PySensor>(lidar)) {
+               throw py::type_error("lidar: a " + std::string(py::str(py::type::handle_of(lidar).attr("__name__"))) +
+                                    "; expected a revolve.Lidar");
+             }
+             const std::uint64_t count = unsignedArgument(poses, "poses", 0, std::numeric_limits<std::uint64_t>::max());
+             const std::string format = textArgument(data, "data");
+             if (!py::isinstance<py::list>(inputs) && !py::isinstance<py::tuple>(inputs)) {
+               throw py::type_error("inputs: a " + std::string(py::str(py::type::handle_of(inputs).attr("__name__"))) +
+                                    "; expected a list of paths");
+             }
              std::vector<std::string> paths;
-             for (const py::object& input : inputs) paths.push_back(pathOf(input));
-             return std::make_unique<ScanFile>(pathOf(path), sensor, poses, data, paths);
+             for (const py::handle input : inputs) paths.push_back(pathArgument(input, "inputs[]"));
+             try {
+               return std::make_unique<ScanFile>(file, lidar.cast<const PySensor&>(), count, format, paths);
+             } catch (const std::runtime_error& error) {  // the output named (its folder, its kind, an input)
+               throw py::value_error(error.what());
+             }
            }),
-           py::arg("path"), py::arg("lidar"), py::arg("poses"), py::arg("data") = "ascii",
-           py::arg("inputs") = std::vector<py::object>{})
+           py::arg("path"), py::arg("lidar"), py::arg("poses"), py::arg("data") = py::str("ascii"),
+           py::arg("inputs") = py::list())
       .def("write", &ScanFile::write, py::arg("first_pose"), py::arg("scan"))
       .def("commit", &ScanFile::commit)
       .def_property_readonly("poses_written", [](const ScanFile& f) { return f.nextPose; });
 
   m.def("cylinder_clearance", &cylinderClearance, py::arg("scene"), py::arg("poses"), py::arg("radius"),
-        py::arg("z_min"), py::arg("z_max"), py::arg("ground") = py::none(), py::arg("threads") = 0,
+        py::arg("z_min"), py::arg("z_max"), py::arg("ground") = py::none(), py::arg("threads") = py::int_(0),
         R"(revolve-clearance's clearance of a vertical-cylinder robot at each pose.
 
 The robot is a solid cylinder of `radius` from z + z_min to z + z_max at (x, y) of each pose. Returns
@@ -368,8 +466,8 @@ a dict: clearance (float64, signed: negative when an obstacle's surface enters t
 no obstacle), collides (bool), object (int64, -1 for none), point (float64 (N, 3), a point of the
 nearest obstacle's surface), exact (bool: false where the clearance is a lower bound).)");
   m.def(
-      "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathOf(path))); }, py::arg("path"),
-      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
+      "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathArgument(path, "path"))); },
+      py::arg("path"), "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
 }
 
 }  // namespace revolve::python

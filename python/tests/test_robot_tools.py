@@ -96,7 +96,7 @@ def test_scan_files_refuse_out_of_order_or_partial_writes_and_inputs(world):
         scan_file.commit()
     del scan_file
     assert not out.exists() and not list(world["folder"].glob("partial.pcd*"))  # the temporary is gone too
-    with pytest.raises(RuntimeError, match=r"same file as .*input"):
+    with pytest.raises(ValueError, match=r"same file as .*input"):
         revolve.ScanFile(world["poses"].with_suffix(".csv"), lidar, 12, inputs=[world["poses"]])
     with pytest.raises(ValueError, match=r"data=\"binary\" applies to .pcd outputs"):
         revolve.ScanFile(out.with_suffix(".csv"), lidar, 12, data="binary")
