@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs, builds and runs the whole test suite: the Release build (with the Python package and its
-# pytest suite), the same suite under AddressSanitizer and UndefinedBehaviorSanitizer (without the
-# Python package), and a short libFuzzer run of every fuzz target.
+# pytest suite), the same suite under AddressSanitizer and UndefinedBehaviorSanitizer (the Python
+# package too, its interpreter started with the sanitizers' runtime preloaded: python/CMakeLists.txt),
+# and a short libFuzzer run of every fuzz target.
 # REVOLVE_FUZZ_SECONDS sets the fuzzing time per target (default 30; 0 skips fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,7 +27,8 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 # clang, with line tables only: the same build under GCC with -O2 -g took 525 s of CI's time, this
 # one 190 s (measured on 2 cores); sanitizer reports still name file and line.
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" -DREVOLVE_SANITIZE=ON -DREVOLVE_BUILD_BENCH=OFF
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" -DREVOLVE_SANITIZE=ON -DREVOLVE_BUILD_BENCH=OFF \
+  -DREVOLVE_BUILD_PYTHON=ON
 cmake --build build-sanitize
 ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$jobs"
 echo "== sanitizer build and tests: ${SECONDS} s so far"

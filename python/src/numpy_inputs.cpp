@@ -64,6 +64,8 @@ QueryArray queryArray(py::handle object, const char* name, py::ssize_t width, co
     throw py::value_error(std::string(name) + ": not C-contiguous; revolve reads " + name +
                           " in place, without a copy: pass numpy.ascontiguousarray(" + name + ")");
   }
+  // Read in place, but never at an odd address: an unaligned buffer (unpickled, from Dask) is copied.
+  if (!(array.flags() & py::detail::npy_api::NPY_ARRAY_ALIGNED_)) array = alignedArray<float>(array);
   QueryArray result;
   result.leadingShape.assign(array.shape(), array.shape() + array.ndim() - 1);
   result.count = std::size_t(array.size() / width);
@@ -98,11 +100,7 @@ py::array_t<double> copiedMatrix(py::handle object, const char* name, py::ssize_
     throw py::value_error(std::string(name) + ": shape " + shapeText(array) + "; expected " + shape +
                           (minRows > 0 ? " with at least " + std::to_string(minRows) + " rows" : std::string()));
   }
-  auto copy = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
-  if (!copy) {
-    PyErr_Clear();
-    throw py::value_error(std::string(name) + ": cannot be read as numbers of double precision");
-  }
+  const py::array_t<double> copy = alignedArray<double>(array);
   py::array_t<double> result(std::vector<py::ssize_t>{copy.shape(0), copy.shape(1)});
   std::copy(copy.data(), copy.data() + copy.size(), result.mutable_data());
   const double* values = result.data();

@@ -21,6 +21,14 @@ namespace py = pybind11;
 // anything else. `expected` says what was wanted, for the message.
 py::array arrayArgument(py::handle object, const char* name, const std::string& expected);
 
+// `array` converted to T (as numpy casts), C-contiguous and aligned: itself when it is all three,
+// else a copy. An array that came through pickle or Dask may sit at any byte offset of its buffer,
+// and reading a float at an odd address is undefined behaviour (the sanitizers' suite caught one).
+template <class T>
+py::array_t<T> alignedArray(const py::array& array) {
+  return py::module_::import("numpy").attr("require")(array, py::dtype::of<T>(), "CA");
+}
+
 struct QueryArray {
   py::array array;  // holds the data alive
   const float* data = nullptr;

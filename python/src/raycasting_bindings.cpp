@@ -107,10 +107,10 @@ std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle t
   if (triangles.ndim() != 2 || triangles.shape(1) != 3) {
     throw py::value_error("triangle_indices: shape " + shapeText(triangles) + "; expected (M, 3)");
   }
-  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+  const py::array_t<std::int64_t> indices = alignedArray<std::int64_t>(triangles);
   if (triangles.dtype().kind() == 'u' && triangles.dtype().itemsize() == 8) {
     // uint64 beyond int64 would wrap in the conversion: refuse it by its own value.
-    const auto raw = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(triangles);
+    const py::array_t<std::uint64_t> raw = alignedArray<std::uint64_t>(triangles);
     for (py::ssize_t i = 0; i < raw.size(); ++i) {
       if (raw.data()[i] >= std::uint64_t(vertices.shape(0))) {
         throw py::value_error("triangle_indices[" + std::to_string(i / 3) + ", " + std::to_string(i % 3) +

@@ -297,12 +297,17 @@ struct ScanFile {
       throw py::value_error(path + ": poses are written in order: expected pose " + std::to_string(nextPose) +
                             ", got first_pose = " + std::to_string(firstPose));
     }
-    const auto ranges = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array("ranges"));
-    const auto points = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array("points"));
-    const auto ids = py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>::ensure(array("ids"));
-    if (!ranges || !points || !ids) PyErr_Clear();
+    const auto converted = [&](auto type, const char* key) {
+      try {
+        return alignedArray<decltype(type)>(array(key));
+      } catch (py::error_already_set&) {  // values numpy cannot cast (strings, objects)
+        throw py::value_error(path + ": scan[\"" + key + "\"] holds no numbers; " + expected + " is expected");
+      }
+    };
+    const py::array_t<float> ranges = converted(float{}, "ranges"), points = converted(float{}, "points");
+    const py::array_t<std::int32_t> ids = converted(std::int32_t{}, "ids");
     const std::size_t perPose = layout.beamsPerPose();
-    if (!ranges || !points || !ids || ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
+    if (ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
         points.size() != 3 * ranges.size() || ids.size() != ranges.size()) {
       throw py::value_error(path + ": " + expected + " is expected");
     }

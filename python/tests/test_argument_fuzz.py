@@ -355,8 +355,10 @@ def run_cases(seed, first, last, folder):
     import warnings
 
     warnings.simplefilter("ignore")
-    # A case that asks for terabytes gets a MemoryError here instead of the machine's memory.
-    resource.setrlimit(resource.RLIMIT_AS, (16 * 2**30, resource.RLIM_INFINITY))
+    # A case that asks for terabytes gets a MemoryError here instead of the machine's memory. (Not
+    # under the sanitizers: AddressSanitizer reserves terabytes of address space for its shadow.)
+    if not os.environ.get("REVOLVE_SANITIZED"):
+        resource.setrlimit(resource.RLIMIT_AS, (16 * 2**30, resource.RLIM_INFINITY))
     os.chdir(folder)  # whatever a mangled path creates lands here
     files, objects = write_files(folder)
     for i in range(first, last):

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import revolve
-from conftest import BIN_DIR, SOURCE_DIR
+from conftest import BIN_DIR, SOURCE_DIR, tool_env
 from isolated import assert_raised, assert_returned, describe, run_calls
 from robot_inputs import NOISY_SENSOR, corridor_poses, write_poses, write_sensor
 
@@ -353,7 +353,7 @@ def test_revolve_trace_refuses_a_curve_lying_on_the_axis(tmp_path):
     (tmp_path / "axis.csv").write_text("r,z\n0,0\n0,0.5\n0,1\n")
     (tmp_path / "rays.csv").write_text("ox,oy,oz,dx,dy,dz,tnear,tfar\n0.5,0,5,0,0,-1,0,inf\n")
     done = subprocess.run([str(tool), "--profile", str(tmp_path / "axis.csv"), "--rays", str(tmp_path / "rays.csv"), "--out",
-                           str(tmp_path / "hits.csv"), "--spline", "catmull-rom"], capture_output=True, text=True)
+                           str(tmp_path / "hits.csv"), "--spline", "catmull-rom"], capture_output=True, text=True, env=tool_env())
     assert done.returncode != 0 and "axis" in done.stderr, f"exit status {done.returncode}: {done.stderr}"
 
 
