@@ -1,5 +1,6 @@
 #include "fuzz_checks.h"
 #include <revolve/baselines.h>
+#include <revolve/embree_baselines.h>
 
 #include "embree/tessellation.h"
 
