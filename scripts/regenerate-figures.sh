@@ -16,9 +16,9 @@ case "${1:-}" in
 esac
 
 scripts/install-deps.sh --test
-targets=(--target revolve-render --target revolve-lidar)
+targets=(--target revolve-render --target revolve-lidar --target _revolve)
 [[ $benchmarks == yes ]] && targets+=(--target revolve-bench --target revolve-lidar-bench)
-scripts/build.sh "${targets[@]}" -- -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_BENCH=ON
+scripts/build.sh "${targets[@]}" -- -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_PYTHON=ON
 mkdir -p out
 
 if [[ $benchmarks == yes ]]; then
@@ -41,6 +41,8 @@ build/bin/revolve-render scenes/spline_still_life.json -o docs/spline_still_life
 # A 2-D scan at the corridor's corner (README, "Robot range-finding"); the scan itself goes to out/.
 build/bin/revolve-lidar scenes/robot_world.json --sensor examples/robot/lidar_2d.json \
   --poses examples/robot/corner.csv -o out/scan.csv --plot docs/robot_scan.png
+# The lidar's intensity across a pole and a barrel, exact against meshes (docs/robot.md, "Intensity").
+PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_intensity.py docs/lidar_intensity.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png

@@ -19,6 +19,7 @@ struct BeamReturn {
   float range;          // +inf: no return (nothing hit, or the measurement outside [min, max])
   float x, y, z;        // the return in the world frame (meaningless without one)
   std::int32_t object;  // the scene's object index (quads: objects + quad index); -1 without a return
+  float intensity = 0;  // reflectivity |cos theta| / range^2, in 1/m^2 (robot/lidar.h); without a return, unused
 };
 
 // The shape of a scan: poses, each a grid of rings (channels) x azimuths. Beams are numbered in
@@ -55,14 +56,15 @@ ScanFormat scanFormatFor(const std::string& path);
 
 // Writes one scan in beam order: the header when made, then each block of beams as it comes.
 //
-// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object`, one row per beam; `range` is `inf`
-// and x, y, z and object are empty for no return (%.9g numbers).
+// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object,intensity`, one row per beam; `range`
+// is `inf` and x, y, z, object and intensity are empty for no return (%.9g numbers).
 //
 // PCD v0.7, organised: WIDTH = azimuths, HEIGHT = rings x poses (row = pose * rings + ring); fields
-// `x y z range ring object` (F F F F U I, sizes 4 4 4 4 2 4); x, y, z and range are nan for no
-// return, object -1; points in the world frame, so VIEWPOINT is the identity. `DATA ascii`: one
-// point a line, floats in their shortest round-trip text. `DATA binary`: PCL's layout, each point
-// its fields packed in order (22 bytes, little-endian as PCL writes on x86-64), no padding.
+// `x y z range ring object intensity` (F F F F U I F, sizes 4 4 4 4 2 4 4); x, y, z, range and
+// intensity are nan for no return, object -1; points in the world frame, so VIEWPOINT is the
+// identity. `DATA ascii`: one point a line, floats in their shortest round-trip text. `DATA binary`:
+// PCL's layout, each point its fields packed in order (26 bytes, little-endian as PCL writes on
+// x86-64), no padding.
 class ScanWriter {
  public:
   ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const ScanLayout& layout);

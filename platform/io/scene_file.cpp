@@ -261,6 +261,14 @@ app::Transform readTransform(const Reader& in, const Json& json, const std::stri
   return transform;
 }
 
+// An object's or quad's "reflectivity" (default 1): the fraction of a lidar beam's light its surface
+// returns, a Lambertian reflectance.
+double readReflectivity(const Reader& in, const Json& json, const std::string& path) {
+  const Json* value = in.optional(json, "reflectivity");
+  if (value == nullptr) return 1;
+  return in.numberIn(*value, child(path, "reflectivity"), 0, 1, "a reflectivity lies in [0, 1]");
+}
+
 SceneLight readLight(const Reader& in, const Json& json, const std::string& path) {
   if (!json.is_object()) in.fail(path, std::string("expected an object, found ") + json.type_name());
   const std::string type = in.string(in.required(json, path, "type"), child(path, "type"));
@@ -347,7 +355,8 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
   const Json& objects = in.array(in.required(root, "", "objects"), "objects");
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const std::string path = element("objects", i);
-    const Json& json = in.object(objects[i], path, {"profile", "material", "translate", "rotate", "scale", "name"});
+    const Json& json =
+        in.object(objects[i], path, {"profile", "material", "translate", "rotate", "scale", "name", "reflectivity"});
     SceneObject object;
     object.profile = lookUp(in, scene.profiles, in.required(json, path, "profile"), child(path, "profile"), "profile");
     object.material =
@@ -357,6 +366,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
       checkName(in, object.name, child(path, "name"));
     }
     object.transform = readTransform(in, json, path);
+    object.reflectivity = readReflectivity(in, json, path);
     // Hits on it must lie within the limit too: secondary rays start there.
     const double reach = app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform));
     if (const std::optional<std::string> fault = app::reachFault(reach)) in.fail(path, *fault);
@@ -367,7 +377,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     in.array(*quads, "quads");
     for (std::size_t i = 0; i < quads->size(); ++i) {
       const std::string path = element("quads", i);
-      const Json& json = in.object((*quads)[i], path, {"corners", "material"});
+      const Json& json = in.object((*quads)[i], path, {"corners", "material", "reflectivity"});
       SceneQuad quad;
       const Json& corners = in.required(json, path, "corners");
       if (!corners.is_array() || corners.size() != 4)
@@ -387,6 +397,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
       }
       quad.material =
           lookUp(in, scene.materials, in.required(json, path, "material"), child(path, "material"), "material");
+      quad.reflectivity = readReflectivity(in, json, path);
       scene.quads.push_back(quad);
     }
   }

@@ -78,11 +78,13 @@ struct SceneObject {
   std::size_t profile = 0;   // index into SceneDescription::profiles
   std::size_t material = 0;  // index into SceneDescription::materials
   app::Transform transform;  // object to world, its scale factors held to the placement rule
+  double reflectivity = 1;   // what a lidar's return keeps, in [0, 1] (robot/lidar.h: intensity)
 };
 
 struct SceneQuad {
   std::array<Vec3d, 4> corners{};  // in order around the quad; drawn as triangles (0, 1, 2), (0, 2, 3)
   std::size_t material = 0;
+  double reflectivity = 1;  // as SceneObject's
 };
 
 enum class LightType { point, sun };

@@ -76,7 +76,7 @@ std::vector<double> fanAngles(const BeamFan& fan) {
 SensorDescription parseSensor(std::string_view text, const std::string& file) {
   const Reader in(file);
   const Json root = json::parse(text, in);
-  in.object(root, "", {"pose", "horizontal", "vertical", "elevations", "range", "noise"});
+  in.object(root, "", {"pose", "horizontal", "vertical", "elevations", "range", "noise", "intensity_noise"});
   SensorDescription sensor;
   sensor.file = file;
   sensor.pose = readPose(in, in.required(root, "", "pose"));
@@ -130,6 +130,14 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
     if (!(sensor.noiseStddev >= 0)) in.fail("noise.stddev", numberText(sensor.noiseStddev) + " is negative");
     if (const Json* mean = in.optional(*noise, "mean")) sensor.noiseMean = in.number(*mean, "noise.mean");
     if (const Json* seed = in.optional(*noise, "seed")) sensor.noiseSeed = in.unsignedInteger(*seed, "noise.seed");
+  }
+  if (const Json* noise = in.optional(root, "intensity_noise")) {
+    in.object(*noise, "intensity_noise", {"stddev", "seed"});
+    sensor.intensityNoiseStddev =
+        in.numberIn(in.required(*noise, "intensity_noise", "stddev"), "intensity_noise.stddev", 0, 1,
+                    "a relative standard deviation lies in [0, 1]");
+    if (const Json* seed = in.optional(*noise, "seed"))
+      sensor.intensityNoiseSeed = in.unsignedInteger(*seed, "intensity_noise.seed");
   }
   return sensor;
 }

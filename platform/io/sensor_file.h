@@ -6,7 +6,8 @@
 //    "horizontal": {"samples": N, "min_angle": a0, "max_angle": a1},
 //    "vertical": {"samples": M, "min_angle": e0, "max_angle": e1}   or   "elevations": [e, ...],
 //    "range": {"min": r0, "max": r1, "resolution": q},
-//    "noise": {"mean": m, "stddev": s, "seed": k}}
+//    "noise": {"mean": m, "stddev": s, "seed": k},
+//    "intensity_noise": {"stddev": s, "seed": k}}
 //
 // The reader is strict: a missing or unknown key, a wrong type or a value breaking a rule is a
 // SensorError naming the file, the key path (`horizontal.samples`), the value and the rule.
@@ -52,6 +53,10 @@ struct SensorDescription {
   double resolution = 0;                  // ranges rounded to a multiple of it; 0 = not rounded
   double noiseMean = 0, noiseStddev = 0;  // Gaussian, added to returns only; stddev 0 = none
   std::uint64_t noiseSeed = 0;
+  // Gaussian intensity noise, relative: a return's intensity times 1 + stddev N(0, 1) (kept >= 0);
+  // 0 = none. Its own seed, so that adding it changes no range.
+  double intensityNoiseStddev = 0;
+  std::uint64_t intensityNoiseSeed = 0;
 };
 
 // Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).

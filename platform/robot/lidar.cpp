@@ -52,7 +52,7 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   // The beam's return from its nearest hit.
   const auto beamReturn = [&](std::uint64_t index, const SensorFrame& frame, const Ray& ray, const Vec3d& direction,
                               const std::optional<scene::RangeHit>& hit) noexcept -> io::BeamReturn {
-    if (!hit) return {noReturn, 0, 0, 0, -1};
+    if (!hit) return {noReturn, 0, 0, 0, -1, 0};
     const std::uint64_t pose = index / perPose;
     const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
     // t is in units of the float direction, whose length differs from 1 by its rounding.
@@ -63,10 +63,27 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     if (sensor_.noiseStddev > 0)
       range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
     if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
-    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return {noReturn, 0, 0, 0, -1};  // ROS: not a return
+    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax))
+      return {noReturn, 0, 0, 0, -1, 0};  // ROS: not a return
+    // Intensity: a Lambertian surface of reflectivity r returns r |cos theta| of the beam's light
+    // (theta between the beam and the surface's normal: the exact surface's, a facet's for a mesh),
+    // received over a solid angle falling as 1 / range^2. The traced range, not the noisy one: the
+    // range noise models the range measurement only.
+    const double traced = double(hit->t) * length;
+    const double cosine = std::abs(double(hit->normal.x) * direction[0] + double(hit->normal.y) * direction[1] +
+                                   double(hit->normal.z) * direction[2]);
+    double intensity = double(hit->reflectivity) * cosine / (traced * traced);
+    if (sensor_.intensityNoiseStddev > 0) {
+      const double z = standardNormal(sensor_.intensityNoiseSeed, firstPose + pose, ring, column);
+      intensity = std::max(0.0, intensity * (1 + sensor_.intensityNoiseStddev * z));
+    }
     // The return where the measured range puts it along the beam, from the double-precision origin.
-    return {float(range), float(frame.origin[0] + range * direction[0]), float(frame.origin[1] + range * direction[1]),
-            float(frame.origin[2] + range * direction[2]), std::int32_t(hit->object)};
+    return {float(range),
+            float(frame.origin[0] + range * direction[0]),
+            float(frame.origin[1] + range * direction[1]),
+            float(frame.origin[2] + range * direction[2]),
+            std::int32_t(hit->object),
+            float(intensity)};
   };
   // Beams [first, first + count) of one ring of one pose, count <= kPacketRays, traced as one packet.
   constexpr std::size_t kPacket = scene::EmbreeScene::kPacketRays;

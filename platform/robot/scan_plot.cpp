@@ -252,7 +252,7 @@ void ScanPlot::add(std::uint64_t first, std::span<const io::BeamReturn> beams) {
     while (d.pose < std::int64_t(pose)) d.startPose(std::size_t(d.pose + 1));
     const io::BeamReturn& b = beams[i];
     if (std::isinf(b.range) || (d.ring && (first + i) % perPose / d.layout.azimuths.size() != *d.ring)) continue;
-    std::fprintf(d.out, d.firstReturn ? "[%.9g, %.9g]" : ", [%.9g, %.9g]", b.x, b.y);
+    std::fprintf(d.out, d.firstReturn ? "[%.9g, %.9g, %.9g]" : ", [%.9g, %.9g, %.9g]", b.x, b.y, b.intensity);
     d.firstReturn = false;
   }
   d.check();

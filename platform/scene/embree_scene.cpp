@@ -151,11 +151,13 @@ struct EmbreeScene::Prototype {
 // An object: a prototype where its placement puts it.
 struct EmbreeScene::Instance {
   std::uint32_t id = 0, prototype = 0, material = 0;
+  float reflectivity = 1;
   app::Placement placement;
   bool attachedDirectly = false;  // the identity, attached to the top scene itself
   // What a hit needs of the placement, as Embree holds it: the linear part rounded to float, the
   // inverse transpose of that for normals, the translation in float.
   app::Matrix3d linear{}, normalMatrix{};
+  std::array<float, 9> rangeNormalMatrix{};  // normalMatrix rounded to float, row by row: a range hit's normal
   Vec3 translate{};
   // Embree maps the world ray into object space in float: o' = L^-1 (o - T), d' = L^-1 d, each
   // component within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d|. Mapped back through L, the
@@ -259,7 +261,8 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     } catch (const app::PlacementError& error) {
       throw std::runtime_error(objectName(i) + ": " + error.what());
     }
-    addInstance(std::uint32_t(prototypeOf[object.profile]), *placement, std::uint32_t(object.material));
+    addInstance(std::uint32_t(prototypeOf[object.profile]), *placement, std::uint32_t(object.material),
+                float(object.reflectivity));
   }
 
   if (!description.quads.empty()) {
@@ -272,6 +275,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       const auto base = std::uint32_t(4 * q);
       for (const std::uint32_t k : {base, base + 1, base + 2, base, base + 2, base + 3}) quads.triangles.push_back(k);
       quads.quadMaterials.push_back(std::uint32_t(quad.material));
+      quads.quadReflectivities.push_back(float(quad.reflectivity));
     }
     quads.vertices.push_back(0);
     addMesh(std::move(quads));
@@ -294,17 +298,21 @@ std::uint32_t EmbreeScene::addRevolution(Shape shape, const app::Placement& plac
   return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
 }
 
-std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Placement& placement,
-                                       std::uint32_t material) {
+std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material,
+                                       float reflectivity) {
   const auto id = std::uint32_t(geometries_.size());
   Instance instance;
   instance.id = id;
   instance.prototype = prototype;
   instance.material = material;
+  instance.reflectivity = reflectivity;
   instance.placement = placement;
   instance.linear = app::roundedToFloat(placement.linear());  // the floats Embree will use
   const app::Matrix3d inv = app::inverse(instance.linear);
   instance.normalMatrix = inv.transposed();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) instance.rangeNormalMatrix[std::size_t(3 * r + c)] = float(instance.normalMatrix[r][c]);
+  }
   const app::Vec3d& t = placement.translate();
   instance.translate = {float(t[0]), float(t[1]), float(t[2])};
   instance.transformErrorFactor = float(gamma(4) * instance.linear.infinityNorm() * inv.infinityNorm());
@@ -445,6 +453,32 @@ std::uint32_t EmbreeScene::objectOf(const RTCHit& hit) const noexcept {
   return id;
 }
 
+// A range-finder's hit for every beam that returns: kept to a few float operations (the normal through
+// the instance's inverse transpose in float, made unit), since a scan makes millions of them.
+RangeHit EmbreeScene::rangeHitOf(const RTCHit& hit, float t) const noexcept {
+  const std::uint32_t id = hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? hit.instID[0] : hit.geomID;
+  const Geometry& g = geometries_[id];
+  Vec3 n{hit.Ng_x, hit.Ng_y, hit.Ng_z};  // object space for an instance, else the world's
+  RangeHit range;
+  range.t = t;
+  range.object = id;
+  if (g.mesh) {
+    const TriangleMesh& mesh = meshes_[g.index];
+    if (!mesh.quadMaterials.empty()) range.object = id + hit.primID / 2;  // quads follow the objects
+    if (!mesh.quadReflectivities.empty()) range.reflectivity = mesh.quadReflectivities[hit.primID / 2];
+  } else {
+    const Instance& instance = instances_[g.index];
+    if (!instance.attachedDirectly) {
+      const std::array<float, 9>& m = instance.rangeNormalMatrix;
+      n = {m[0] * n.x + m[1] * n.y + m[2] * n.z, m[3] * n.x + m[4] * n.y + m[5] * n.z,
+           m[6] * n.x + m[7] * n.y + m[8] * n.z};
+    }
+    range.reflectivity = instance.reflectivity;
+  }
+  range.normal = app::normalize(n);
+  return range;
+}
+
 std::optional<WorldHit> EmbreeScene::hitOf(const Ray& ray, const RTCRayHit& rayHit) const noexcept {
   const std::uint32_t id = rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rayHit.hit.instID[0] : rayHit.hit.geomID;
   const Geometry& g = geometries_[id];
@@ -476,7 +510,7 @@ std::optional<RangeHit> EmbreeScene::nearest(const Ray& ray) const noexcept {
   query.intersect(top_.get(), rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   rayHit.ray.tfar /= length;
-  return RangeHit{rayHit.ray.tfar, objectOf(rayHit.hit)};
+  return rangeHitOf(rayHit.hit, rayHit.ray.tfar);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const noexcept {
@@ -544,7 +578,8 @@ void EmbreeScene::nearest(std::span<const Ray> rays, std::span<std::optional<Ran
     hit.instID[0] = packet.hit.instID[0][k];
     hit.geomID = packet.hit.geomID[k];
     hit.primID = packet.hit.primID[k];
-    hits[k] = RangeHit{t, objectOf(hit)};
+    hit.Ng_x = packet.hit.Ng_x[k], hit.Ng_y = packet.hit.Ng_y[k], hit.Ng_z = packet.hit.Ng_z[k];
+    hits[k] = rangeHitOf(hit, t);
   }
 }
 

@@ -66,11 +66,14 @@ struct WorldHit {
   Vec3 pointError{};
 };
 
-// The nearest hit's distance and object only: what a range-finder needs, without the normals and
-// surface parameters WorldHit carries.
+// The nearest hit as a range-finder needs it: its distance, object, the surface's geometric normal
+// (the exact surface's own, a facet's for a mesh) and reflectivity, without the shading normals,
+// surface parameters and error bounds WorldHit carries.
 struct RangeHit {
   float t = 0;
   std::uint32_t object = 0;  // as WorldHit::object
+  Vec3 normal{};             // world, unit (either side)
+  float reflectivity = 1;    // the object's or quad's (io::SceneObject::reflectivity)
 };
 
 // A triangle mesh as added: 3 floats a vertex (and one more at the end: Embree reads a vertex as
@@ -79,6 +82,7 @@ struct TriangleMesh {
   std::vector<float> vertices;
   std::vector<std::uint32_t> triangles;
   std::vector<std::uint32_t> quadMaterials;  // a scene file's quads: one material a pair of triangles
+  std::vector<float> quadReflectivities;     // and one reflectivity
   std::size_t vertexCount() const { return (vertices.size() - 1) / 3; }
   std::size_t triangleCount() const { return triangles.size() / 3; }
 };
@@ -169,7 +173,9 @@ class EmbreeScene {
 
   EmbreeScene(const Layout& layout, bool unitDirections);
   // Places prototype `prototype` (built already) as a new geometry; returns its id.
-  std::uint32_t addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material);
+  std::uint32_t addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material,
+                            float reflectivity = 1);
+  RangeHit rangeHitOf(const RTCHit& hit, float t) const noexcept;
   std::uint32_t addMesh(TriangleMesh mesh);
   std::optional<WorldHit> hitOf(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
   std::uint32_t objectOf(const RTCHit& hit) const noexcept;

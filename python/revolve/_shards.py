@@ -40,8 +40,8 @@ def _scene_and_lidar(scene, sensor):
 
 def scan_shard(scene, sensor, poses, first_pose=0, threads=0):
     """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose) with the scene and sensor files
-    loaded once per process: the arrays a ScanFile writes (ranges, points, ids) of poses
+    loaded once per process: the arrays a ScanFile writes (ranges, points, ids, intensity) of poses
     first_pose, first_pose + 1, ... of a scan, each with its own noise."""
     built, lidar = _scene_and_lidar(_path(scene, "scene"), _path(sensor, "sensor"))
     scan = lidar.scan(built, poses, threads=threads, first_pose=first_pose)
-    return {key: scan[key] for key in ("ranges", "points", "ids")}
+    return {key: scan[key] for key in ("ranges", "points", "ids", "intensity")}

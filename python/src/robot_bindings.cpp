@@ -187,14 +187,14 @@ io::SensorDescription sensorOf(py::handle sensor) {
 
 // A scan's returns in numpy arrays shaped (poses, rings, azimuths), written block by block.
 struct ScanArrays {
-  py::array_t<float> ranges, points;
+  py::array_t<float> ranges, points, intensity;
   py::array_t<std::int32_t> ids;
   py::array_t<std::uint16_t> rings;
 };
 
 ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimuths) {
   const std::vector<py::ssize_t> shape{py::ssize_t(poses), py::ssize_t(rings), py::ssize_t(azimuths)};
-  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<std::int32_t>(shape),
+  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<float>(shape), newArray<std::int32_t>(shape),
           newArray<std::uint16_t>(shape)};
 }
 
@@ -210,6 +210,7 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
   const std::size_t rings = layout.rings(), azimuths = layout.azimuths.size();
   ScanArrays a = newScanArrays(poses.size(), rings, azimuths);
   float* ranges = a.ranges.mutable_data();
+  float* intensity = a.intensity.mutable_data();
   float* points = a.points.mutable_data();
   std::int32_t* ids = a.ids.mutable_data();
   std::uint16_t* ringOf = a.rings.mutable_data();
@@ -228,6 +229,7 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
             points[3 * b + 1] = hit ? beam.y : nan;
             points[3 * b + 2] = hit ? beam.z : nan;
             ids[b] = beam.object;
+            intensity[b] = hit ? beam.intensity : nan;
             ringOf[b] = std::uint16_t(b / azimuths % rings);
           }
         },
@@ -238,6 +240,7 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
   result["ranges"] = a.ranges;
   result["rings"] = a.rings;
   result["ids"] = a.ids;
+  result["intensity"] = a.intensity;
   return result;
 }
 
@@ -281,13 +284,13 @@ struct ScanFile {
     const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, layout.poses);
     const std::string expected = "a scan dict of Lidar.scan for this sensor (ranges (P, " +
                                  std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
-                                 "), points, ids)";
+                                 "), points, ids, intensity)";
     if (!py::isinstance<py::dict>(scanObject)) {
       throw py::type_error("scan: a " + std::string(py::str(py::type::handle_of(scanObject).attr("__name__"))) +
                            "; expected " + expected);
     }
     const py::dict scan = py::reinterpret_borrow<py::dict>(scanObject);
-    for (const char* key : {"ranges", "points", "ids"}) {
+    for (const char* key : {"ranges", "points", "ids", "intensity"}) {
       if (!scan.contains(key)) throw py::value_error(std::string("scan: no \"") + key + "\"; expected " + expected);
     }
     const auto array = [&](const char* key) {
@@ -304,11 +307,12 @@ struct ScanFile {
         throw py::value_error(path + ": scan[\"" + key + "\"] holds no numbers; " + expected + " is expected");
       }
     };
-    const py::array_t<float> ranges = converted(float{}, "ranges"), points = converted(float{}, "points");
+    const py::array_t<float> ranges = converted(float{}, "ranges"), points = converted(float{}, "points"),
+                             intensity = converted(float{}, "intensity");
     const py::array_t<std::int32_t> ids = converted(std::int32_t{}, "ids");
     const std::size_t perPose = layout.beamsPerPose();
     if (ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
-        points.size() != 3 * ranges.size() || ids.size() != ranges.size()) {
+        points.size() != 3 * ranges.size() || ids.size() != ranges.size() || intensity.size() != ranges.size()) {
       throw py::value_error(path + ": " + expected + " is expected");
     }
     const std::uint64_t poses = std::uint64_t(ranges.shape(0));
@@ -319,8 +323,8 @@ struct ScanFile {
     }
     std::vector<io::BeamReturn> beams(std::size_t(ranges.size()));
     for (std::size_t b = 0; b < beams.size(); ++b) {
-      beams[b] = {ranges.data()[b], points.data()[3 * b], points.data()[3 * b + 1], points.data()[3 * b + 2],
-                  ids.data()[b]};
+      beams[b] = {ranges.data()[b],         points.data()[3 * b], points.data()[3 * b + 1],
+                  points.data()[3 * b + 2], ids.data()[b],        intensity.data()[b]};
     }
     writer->write(firstPose * perPose, beams);
     nextPose += poses;
@@ -409,8 +413,9 @@ azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
 scan(scene, poses) traces every beam from every pose with revolve-lidar's conventions (ROS
 LaserScan: no return is inf, never clamped; seeded per-beam noise) and returns a dict of arrays
 shaped (poses, rings, azimuths): ranges (float32, inf for no return), points (float32, (..., 3),
-world frame, nan for no return), rings (uint16) and ids (int32: the scene's object index, quads
-after the objects, -1 for no return), bit for bit revolve-lidar's.)")
+world frame, nan for no return), intensity (float32, reflectivity |cos| / range^2 in 1/m^2, nan
+for no return), rings (uint16) and ids (int32: the scene's object index, quads after the objects,
+-1 for no return), bit for bit revolve-lidar's.)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
            py::arg("first_pose") = py::int_(0),

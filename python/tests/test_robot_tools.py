@@ -52,9 +52,12 @@ def test_scan_is_revolve_lidars_bit_for_bit(world):
         assert np.array_equal(scan["points"][..., k].ravel(), expected[axis], equal_nan=True)
     assert np.array_equal(scan["rings"].ravel(), expected["ring"])
     assert np.array_equal(scan["ids"].ravel(), expected["object"])
+    assert scan["intensity"].dtype == np.float32 and scan["intensity"].shape == scan["ranges"].shape
+    assert np.array_equal(scan["intensity"].ravel(), expected["intensity"], equal_nan=True)
+    assert np.all(np.isnan(scan["intensity"].ravel()[~returns])) and np.all(scan["intensity"].ravel()[returns] >= 0)
     # The same from the poses as an array, on one thread, with the scene as a path.
     again = lidar.scan(str(world["scene"]), revolve.read_poses(world["poses"]), threads=1)
-    for key in ("ranges", "points", "ids", "rings"):
+    for key in ("ranges", "points", "ids", "rings", "intensity"):
         assert np.array_equal(again[key], scan[key], equal_nan=True), key
 
 
@@ -127,6 +130,11 @@ def test_a_beam_at_a_pole_returns_the_gap_to_its_surface(tmp_path):
     assert np.isinf(ranges[2]) and scan["ids"][2, 0, 0] == -1 and np.all(np.isnan(scan["points"][2, 0, 0]))
     assert np.allclose(scan["points"][0, 0, 0], [POLE_AT[0] - POLE_RADIUS, 0, 1], atol=1e-6)
     assert scan["ids"][0, 0, 0] == 0
+    # Head-on (the pole's normal along the beam), reflectivity 1: intensity 1 / range^2.
+    intensity = scan["intensity"][:, 0, 0]
+    assert intensity[0] == pytest.approx(1 / (POLE_AT[0] - POLE_RADIUS) ** 2, rel=1e-6)
+    assert intensity[1] == pytest.approx(1 / (POLE_AT[0] - 0.5 - POLE_RADIUS) ** 2, rel=1e-6)
+    assert np.isnan(intensity[2])
 
 
 def test_clearance_is_revolve_clearances(world):

@@ -71,6 +71,22 @@ TEST(SceneFileTest, TheValidSceneReadsWithEveryPart) {
   EXPECT_EQ(scene.lights.size(), 1u);
 }
 
+// "reflectivity" (what a lidar's intensity scales by) on objects and quads: 1 unless given, the
+// edges 0 and 1 taken.
+TEST(SceneFileTest, ReflectivitiesDefaultToOneAndTakeTheirEdges) {
+  const testing::ScratchDirectory dir;
+  std::string text = testing::replaced(testing::kScene, R"({"profile": "ball", "material": "white"})",
+                                       R"({"profile": "ball", "material": "white", "reflectivity": 0})");
+  text = testing::replaced(text, R"("material": "white"}],)", R"("material": "white", "reflectivity": 0.25}],)");
+  dir.write("scene.json", text);
+  dir.write("bottle.csv", testing::kBottleCsv);
+  const WorkingDirectory inside(dir.path());
+  const io::SceneDescription scene = io::readScene("scene.json");
+  EXPECT_EQ(scene.objects[0].reflectivity, 0.0);
+  EXPECT_EQ(scene.objects[1].reflectivity, 1.0);
+  EXPECT_EQ(scene.quads[0].reflectivity, 0.25);
+}
+
 // Directions read from the file are scaled by their largest component before they are normalised,
 // so that one of 1e-200 (or a subnormal) is as good as one of 1: rotation axes, the camera's up,
 // the sun's direction.

@@ -368,5 +368,87 @@ TEST(LidarTest, MeshRangesAreLongerAndImproveWithSlices) {
   }
 }
 
+// Intensity: a pole of radius a (axis at (c, 0)), reflectivity 0.6, scanned in its mid-plane from
+// the origin. Every return's intensity is r |n . d| / range^2 with the pole's radial normal at the
+// returned point and the beam's direction written here from the conventions; to float rounding for
+// the exact surface, and the facets' error for meshes, which falls with the slices and is reported.
+// The rounding: the returned point is a float, within 2^-23 of its coordinates (about 2.5 here) of
+// the surface, so the radial normal made from it is off by up to 2^-23 * 2.5 / a, and the
+// library's float normal by a few 2^-24: |n . d| is known to 2^-18 absolute, the intensity to 2^-18
+// of the head-on intensity r / range^2 (the range itself, to 2^-22, adds 2^-21 relative).
+TEST(LidarTest, IntensityIsReflectivityTimesCosineOverRangeSquared) {
+  const double a = 0.25, c = 2, reflectivity = 0.6;
+  io::SceneDescription scene = testing::sceneOf({{testing::cylinderProfile(a, -1, 1), testing::at(c, 0), "pole"}});
+  scene.objects[0].reflectivity = reflectivity;
+  const io::SensorDescription s = sensor(2001, -0.2, 0.2, {});
+  const std::vector<io::RobotPose> poses{{}};
+  const auto expected = [&](const io::BeamReturn& beam, double phi) {
+    const Vec3d d{std::cos(phi), std::sin(phi), 0};
+    const Vec3d n{(double(beam.x) - c) / a, double(beam.y) / a, 0};  // radial, unit on the surface
+    const double range = double(beam.range);
+    return reflectivity * std::abs(testing::dot(n, d)) / (range * range);
+  };
+  double previousError = INFINITY;
+  for (const std::uint32_t slices : {0u, 16u, 64u, 256u}) {  // 0: the exact surface
+    scene::BuildSettings build;
+    build.mesh = slices > 0;
+    build.slices = slices > 0 ? slices : 64;
+    const scene::EmbreeScene built(scene, build);
+    const io::ScanTable scan = robot::Lidar(built, s).scan(poses);
+    double worst = 0;
+    int returns = 0;
+    for (int i = 0; i < s.horizontal.samples; ++i) {
+      const io::BeamReturn& beam = scan.at(0, 0, std::size_t(i));
+      if (std::isinf(beam.range)) continue;
+      ++returns;
+      const double phi =
+          s.horizontal.minAngle + i * (s.horizontal.maxAngle - s.horizontal.minAngle) / (s.horizontal.samples - 1);
+      const double want = expected(beam, phi);
+      EXPECT_GE(beam.intensity, 0);
+      if (slices == 0) {
+        const double range = double(beam.range);
+        EXPECT_NEAR(beam.intensity, want, 0x1p-18 * reflectivity / (range * range) + 0x1p-21 * want) << "beam " << i;
+      }
+      worst = std::max(worst, std::abs(double(beam.intensity) - want) / (reflectivity / (c * c)));
+    }
+    ASSERT_GT(returns, 400);
+    std::printf("intensity, %s: largest error %.3g of the head-on intensity\n",
+                slices == 0 ? "exact" : (std::to_string(slices) + "-slice mesh").c_str(), worst);
+    if (slices > 0) {
+      EXPECT_LT(worst, previousError);  // the facet banding shrinks as the facets narrow
+      previousError = worst;
+    } else {
+      EXPECT_LT(worst, 1e-5);
+    }
+  }
+}
+
+TEST(LidarTest, IntensityNoiseIsRelativeSeededAndLeavesRangesAlone) {
+  const io::SceneDescription scene =
+      testing::sceneOf({{testing::cylinderProfile(0.25, -1, 1), testing::at(2, 0), "pole"}});
+  io::SensorDescription s = sensor(2001, -0.1, 0.1, {});
+  const scene::EmbreeScene built(scene, {});
+  const std::vector<io::RobotPose> poses{{}};
+  const io::ScanTable quiet = robot::Lidar(built, s).scan(poses);
+  s.intensityNoiseStddev = 0.1;
+  s.intensityNoiseSeed = 7;
+  const io::ScanTable noisy = robot::Lidar(built, s).scan(poses, 1);
+  const io::ScanTable again = robot::Lidar(built, s).scan(poses, 2);
+  double sum = 0, sumSquares = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < quiet.beams.size(); ++i) {
+    EXPECT_EQ(noisy.beams[i].range, quiet.beams[i].range);          // ranges untouched
+    EXPECT_EQ(noisy.beams[i].intensity, again.beams[i].intensity);  // seeded per beam, not per thread
+    if (std::isinf(quiet.beams[i].range)) continue;
+    const double z = (double(noisy.beams[i].intensity) / quiet.beams[i].intensity - 1) / 0.1;
+    sum += z, sumSquares += z * z, ++n;
+  }
+  ASSERT_GT(n, 1000);
+  const double mean = sum / n, stddev = std::sqrt(sumSquares / n - mean * mean);
+  // Standard normal deviates: the mean within 4 / sqrt(n), the standard deviation within 10%.
+  EXPECT_LT(std::abs(mean), 4 / std::sqrt(double(n)));
+  EXPECT_NEAR(stddev, 1, 0.1);
+}
+
 }  // namespace
 }  // namespace revolve

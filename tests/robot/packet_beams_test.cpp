@@ -65,6 +65,14 @@ TEST(LidarPacketTest, FanPacketsEqualSingleBeams) {
               EXPECT_EQ(std::bit_cast<std::uint32_t>(packet[k]->t), std::bit_cast<std::uint32_t>(single->t))
                   << "pose " << p << " ring " << ring << " column " << start + k;
               EXPECT_EQ(packet[k]->object, single->object);
+              // The normal and reflectivity intensity is made of, bit for bit too.
+              EXPECT_EQ(std::bit_cast<std::uint32_t>(packet[k]->normal.x),
+                        std::bit_cast<std::uint32_t>(single->normal.x));
+              EXPECT_EQ(std::bit_cast<std::uint32_t>(packet[k]->normal.y),
+                        std::bit_cast<std::uint32_t>(single->normal.y));
+              EXPECT_EQ(std::bit_cast<std::uint32_t>(packet[k]->normal.z),
+                        std::bit_cast<std::uint32_t>(single->normal.z));
+              EXPECT_EQ(packet[k]->reflectivity, single->reflectivity);
               ++hits;
             }
             ++beams;

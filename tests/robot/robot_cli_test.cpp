@@ -83,13 +83,14 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams (1 ring x 3 azimuths)"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
   ASSERT_EQ(rows.size(), 10u);
-  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object");
+  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity");
   // Pose 0, beam 1 looks along +x at the pole: 2 - 0.25 = 1.75; pose 1 from 0.5 further on: 1.25;
   // pose 2 faces -x: nothing. Beams at +-pi/2 see nothing (the floor is below the plane).
-  expectRow(rows[2], {0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0});
-  expectRow(rows[5], {1, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0});
-  EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,");
-  EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,");
+  // Head-on (the pole's normal along the beam), reflectivity 1: intensity 1 / range^2.
+  expectRow(rows[2], {0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0, 1 / (1.75 * 1.75)});
+  expectRow(rows[5], {1, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0, 1 / (1.25 * 1.25)});
+  EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,,");
+  EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,,");
 
   const testing::ProcessResult pcd =
       runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv",
@@ -99,8 +100,8 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(cloud, HasSubstr("\nWIDTH 3\nHEIGHT 3\n"));
   const std::vector<std::string> points = lines(cloud);
   ASSERT_EQ(points.size(), 11u + 9);  // the header's 11 lines, then WIDTH x HEIGHT points
-  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0}, ' ');
-  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 -1");
+  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0, 1 / (1.75 * 1.75)}, ' ');
+  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 -1 nan");
   // A PNG (its signature, then the IHDR chunk's big-endian width and height), of a readable size.
   const std::string png = readWholeFile(dir / "scan.png");
   ASSERT_GT(png.size(), 24u);

@@ -18,7 +18,8 @@ const std::string kPlanar = R"({
   "pose": {"position": [0.1, -0.2, 0.3], "yaw": 0.5, "pitch": -0.25, "roll": 0.125},
   "horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},
   "range": {"min": 0.1, "max": 30, "resolution": 0.01},
-  "noise": {"mean": 0.002, "stddev": 0.01, "seed": 18446744073709551615}
+  "noise": {"mean": 0.002, "stddev": 0.01, "seed": 18446744073709551615},
+  "intensity_noise": {"stddev": 0.05, "seed": 9}
 })";
 
 TEST(SensorFileTest, ReadsEveryKey) {
@@ -36,6 +37,8 @@ TEST(SensorFileTest, ReadsEveryKey) {
   EXPECT_EQ(s.noiseMean, 0.002);
   EXPECT_EQ(s.noiseStddev, 0.01);
   EXPECT_EQ(s.noiseSeed, 18446744073709551615ull);  // the full 64-bit range, not through a double
+  EXPECT_EQ(s.intensityNoiseStddev, 0.05);
+  EXPECT_EQ(s.intensityNoiseSeed, 9u);
 }
 
 TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
@@ -49,6 +52,7 @@ TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
   EXPECT_EQ(s.resolution, 0);
   EXPECT_EQ(s.noiseMean, 0);
   EXPECT_EQ(s.noiseStddev, 0);
+  EXPECT_EQ(s.intensityNoiseStddev, 0);
 }
 
 TEST(SensorFileTest, VerticalFanAndElevationList) {
@@ -144,6 +148,10 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
       BadSensor{"NegativeSeed", with(R"("seed": 18446744073709551615)", R"("seed": -3)"), "noise.seed: -3 is negative"},
       BadSensor{"FractionalSeed", with(R"("seed": 18446744073709551615)", R"("seed": 1.5)"),
                 "noise.seed: 1.5 is not a whole number"},
+      BadSensor{"IntensityNoiseAboveOne", with(R"("stddev": 0.05)", R"("stddev": 1.5)"),
+                "intensity_noise.stddev: 1.5 is out of range: a relative standard deviation lies in [0, 1]"},
+      BadSensor{"IntensityNoiseUnknownKey", with(R"("stddev": 0.05, "seed": 9)", R"("stddev": 0.05, "mean": 9)"),
+                "intensity_noise.mean: unknown key; expected one of: stddev, seed"},
       BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"),
                 "pose.position: expected an array of 3 numbers"}};
   for (const BadSensor& bad : cases) {

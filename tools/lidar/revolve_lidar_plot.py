@@ -18,6 +18,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
+    from matplotlib.colors import LogNorm
     from matplotlib.patches import Circle, Polygon
 except ImportError as error:
     sys.exit(f"needs matplotlib (Debian: apt-get install python3-matplotlib): {error}")
@@ -85,15 +86,21 @@ def main():
     step, count = max(1, -(-total // MAX_BEAMS)), 0
     for pose in data["poses"]:
         origin = pose["origin"]
-        beams = [[origin, point] for i, point in enumerate(pose["returns"], start=count) if i % step == 0]
+        beams = [[origin, point[:2]] for i, point in enumerate(pose["returns"], start=count) if i % step == 0]
         count += len(pose["returns"])
         if beams:
             ax.add_collection(LineCollection(beams, colors=BEAM, alpha=0.12, linewidths=0.6, zorder=4))
     returns = [point for pose in data["poses"] for point in pose["returns"]]
     if returns:
-        # Dots shrink as returns multiply, so that a 3-D scan's rings stay apart.
+        # Dots shrink as returns multiply, so that a 3-D scan's rings stay apart. Coloured by
+        # intensity (reflectivity |cos| / range^2), on a log scale: it spans decades with range.
         size = 4 if len(returns) <= 20000 else 1
-        ax.scatter(*zip(*returns), s=size, color=RETURN, zorder=5, linewidths=0)
+        xs, ys, intensity = zip(*returns)
+        positive = [i for i in intensity if i > 0]
+        low, high = (min(positive), max(positive)) if positive else (1e-3, 1.0)
+        dots = ax.scatter(xs, ys, s=size, c=[max(i, low) for i in intensity], cmap="inferno",
+                          norm=LogNorm(vmin=low, vmax=max(high, low * 1.001)), zorder=5, linewidths=0)
+        fig.colorbar(dots, ax=ax, shrink=0.7, pad=0.02, label="return intensity, reflectivity |cos θ| / range² (1/m²)")
     for pose in data["poses"]:
         (x, y), (hx, hy) = pose["origin"], pose["heading"]
         arrow = 0.05 * max(x1 - x0, y1 - y0)
@@ -108,7 +115,7 @@ def main():
         Polygon([[0, 0]], facecolor=OBJECT, edgecolor=OBJECT_EDGE, label="object (top view)"),
         plt.Line2D([], [], color=SECTION, marker="o", ls="none", mfc="none", label="section at sensor height"),
         plt.Line2D([], [], color=BEAM, alpha=0.5, label="beam"),
-        plt.Line2D([], [], color=RETURN, marker=".", ls="none", label="return"),
+        plt.Line2D([], [], color=RETURN, marker=".", ls="none", label="return (colour: intensity)"),
         plt.Line2D([], [], color=SENSOR, marker="o", ls="none", label="sensor"),
     ]
     ax.legend(handles=legend, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=7, fontsize=8, frameon=False)
