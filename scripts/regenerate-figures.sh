@@ -43,6 +43,8 @@ build/bin/revolve-lidar scenes/robot_world.json --sensor examples/robot/lidar_2d
   --poses examples/robot/corner.csv -o out/scan.csv --plot docs/robot_scan.png
 # The lidar's intensity across a pole and a barrel, exact against meshes (docs/robot.md, "Intensity").
 PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_intensity.py docs/lidar_intensity.png
+# A moving sensor's sweep of the corridor beside the same sweep at rest (docs/robot.md, "Time and motion").
+PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_motion.py docs/lidar_motion.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png

@@ -9,9 +9,23 @@
 
 namespace revolve::io {
 
+namespace {
+
+// The columns a poses file may have, in the order messages list them.
+enum Column { kTime, kX, kY, kZ, kYaw, kColumns };
+constexpr const char* kColumnNames[kColumns] = {"time", "x", "y", "z", "yaw"};
+constexpr const char* kHeaderRule = "the columns are x, y and yaw, with z and time optional, each once (x,y,z,yaw)";
+
+}  // namespace
+
 std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view file) {
   std::vector<RobotPose> poses;
-  bool withZ = false, headerSeen = false;
+  // Where each column is in a line (-1: absent), from the header, which is therefore required.
+  int at[kColumns] = {-1, -1, -1, -1, -1};
+  std::size_t columns = 0;
+  bool headerSeen = false;
+  std::size_t previousLine = 0;
+  std::string previousTime;  // as written on previousLine
   csv::Lines lines(text, file);
   while (const std::optional<std::string_view> raw = lines.next()) {
     const std::size_t lineNumber = lines.number();
@@ -19,46 +33,61 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
     if (line.empty()) continue;
     const std::vector<std::string_view> fields = csv::splitFields(line);
     if (!headerSeen) {
-      // The header decides whether there is a z column, so it is required.
-      std::string joined;
       for (std::size_t i = 0; i < fields.size(); ++i) {
-        if (i > 0) joined += ',';
-        joined += fields[i];
+        int column = kColumns;
+        for (int c = 0; c < kColumns; ++c)
+          if (fields[i] == kColumnNames[c]) column = c;
+        if (column == kColumns || at[column] >= 0) {
+          throw InputError(file, lineNumber,
+                           "header " + csv::quote(line) + ": column " + std::to_string(i + 1) + " " +
+                               csv::quote(fields[i]) + (column == kColumns ? " is not a pose column" : " is repeated") +
+                               "; " + kHeaderRule);
+        }
+        at[column] = int(i);
       }
-      if (joined != "x,y,z,yaw" && joined != "x,y,yaw") {
-        throw InputError(file, lineNumber, "header " + csv::quote(line) + " is not \"x,y,z,yaw\" or \"x,y,yaw\"");
-      }
-      withZ = joined == "x,y,z,yaw";
+      if (at[kX] < 0 || at[kY] < 0 || at[kYaw] < 0)
+        throw InputError(file, lineNumber, "header " + csv::quote(line) + " lacks x, y or yaw; " + kHeaderRule);
+      columns = fields.size();
       headerSeen = true;
       continue;
     }
-    const std::size_t columns = withZ ? 4 : 3;
     if (fields.size() != columns) {
       throw InputError(file, lineNumber,
-                       "expected " + std::to_string(columns) + " comma-separated values (" +
-                           (withZ ? "x,y,z,yaw" : "x,y,yaw") + "), found " + std::to_string(fields.size()));
+                       "expected " + std::to_string(columns) + " comma-separated values (as the header), found " +
+                           std::to_string(fields.size()));
     }
     // `position`: a coordinate, within the limit every position keeps (geometry/ray_limits.h).
-    const auto value = [&](std::size_t i, const char* name, bool emptyIsZero, bool position) {
-      if (emptyIsZero && fields[i].empty()) return 0.0;
-      const std::optional<double> x = csv::parseNumber<double>(fields[i]);
-      if (!x)
-        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not a number");
-      if (!std::isfinite(*x))
-        throw InputError(file, lineNumber, std::string(name) + " = " + csv::quote(fields[i]) + " is not finite");
+    const auto value = [&](Column column, bool emptyIsZero, bool position) {
+      const std::string_view field = fields[std::size_t(at[column])];
+      const std::string name = kColumnNames[column];
+      if (emptyIsZero && field.empty()) return 0.0;
+      const std::optional<double> x = csv::parseNumber<double>(field);
+      if (!x) throw InputError(file, lineNumber, name + " = " + csv::quote(field) + " is not a number");
+      if (!std::isfinite(*x)) throw InputError(file, lineNumber, name + " = " + csv::quote(field) + " is not finite");
       if (position && std::abs(*x) > app::kMaxWorldCoordinate) {
-        throw InputError(file, lineNumber,
-                         std::string(name) + " = " + csv::quote(fields[i]) +
-                             " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
+        throw InputError(
+            file, lineNumber,
+            name + " = " + csv::quote(field) + " is beyond the coordinate limit: " + app::kCoordinateLimitRule);
       }
       return *x;
     };
     RobotPose pose;
-    pose.x = value(0, "x", false, true);
-    pose.y = value(1, "y", false, true);
-    pose.z = withZ ? value(2, "z", true, true) : 0.0;
-    pose.yaw = value(withZ ? 3 : 2, "yaw", false, false);
+    pose.x = value(kX, false, true);
+    pose.y = value(kY, false, true);
+    pose.z = at[kZ] >= 0 ? value(kZ, true, true) : 0.0;
+    pose.yaw = value(kYaw, false, false);
+    if (at[kTime] >= 0) {
+      pose.time = value(kTime, false, false);
+      if (const char* problem = poseTimeProblem(pose.time, poses.empty() ? std::nan("") : poses.back().time)) {
+        std::string message = "time = " + csv::quote(fields[std::size_t(at[kTime])]) + " " + problem;
+        if (!poses.empty())
+          message += " (the pose on line " + std::to_string(previousLine) + " is at " + previousTime + ")";
+        throw InputError(file, lineNumber, message);
+      }
+      previousTime = std::string(fields[std::size_t(at[kTime])]);
+    }
     poses.push_back(pose);
+    previousLine = lineNumber;
   }
   if (!headerSeen)
     throw InputError(file, 0, "empty: expected the header \"x,y,z,yaw\" (or \"x,y,yaw\") and at least one pose");

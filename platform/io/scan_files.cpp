@@ -17,7 +17,8 @@ namespace {
 static_assert(std::endian::native == std::endian::little,
               "binary PCD is written in the byte order PCL reads on x86-64");
 
-constexpr std::size_t kBinaryPointBytes = 4 + 4 + 4 + 4 + 2 + 4 + 4;  // x y z range ring object intensity, packed
+// x y z range ring object intensity time, packed
+constexpr std::size_t kBinaryPointBytes = 4 + 4 + 4 + 4 + 2 + 4 + 4 + 4;
 
 // A float as its shortest round-trip text ("nan" for NaN), appended at `at`.
 char* appendFloat(char* at, float value) {
@@ -40,17 +41,17 @@ ScanFormat scanFormatFor(const std::string& path) {
 ScanWriter::ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const ScanLayout& layout)
     : out_(out), format_(format), data_(data), layout_(layout) {
   if (format_ == ScanFormat::csv) {
-    out_.write("pose,ring,azimuth,elevation,range,x,y,z,object,intensity\n");
+    out_.write("pose,ring,azimuth,elevation,range,x,y,z,object,intensity,time\n");
     return;
   }
   const std::size_t width = layout_.azimuths.size(), height = layout_.rings() * layout_.poses;
   out_.print(
       "# .PCD v0.7 - Point Cloud Data file format\n"
       "VERSION 0.7\n"
-      "FIELDS x y z range ring object intensity\n"
-      "SIZE 4 4 4 4 2 4 4\n"
-      "TYPE F F F F U I F\n"
-      "COUNT 1 1 1 1 1 1 1\n"
+      "FIELDS x y z range ring object intensity time\n"
+      "SIZE 4 4 4 4 2 4 4 4\n"
+      "TYPE F F F F U I F F\n"
+      "COUNT 1 1 1 1 1 1 1 1\n"
       "WIDTH %zu\n"
       "HEIGHT %zu\n"
       "VIEWPOINT 0 0 0 1 0 0 0\n"
@@ -68,10 +69,11 @@ void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
       const std::size_t pose = beam / (rings * columns), ring = (beam / columns) % rings, column = beam % columns;
       const BeamReturn& b = beams[i];
       if (std::isinf(b.range)) {
-        out_.print("%zu,%zu,%.9g,%.9g,inf,,,,,\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring]);
+        out_.print("%zu,%zu,%.9g,%.9g,inf,,,,,,%.9g\n", pose, ring, layout_.azimuths[column], layout_.elevations[ring],
+                   b.time);
       } else {
-        out_.print("%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g\n", pose, ring, layout_.azimuths[column],
-                   layout_.elevations[ring], b.range, b.x, b.y, b.z, int(b.object), b.intensity);
+        out_.print("%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%.9g,%.9g\n", pose, ring, layout_.azimuths[column],
+                   layout_.elevations[ring], b.range, b.x, b.y, b.z, int(b.object), b.intensity, b.time);
       }
     }
     return;
@@ -90,13 +92,14 @@ void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
       std::memcpy(at + 18, &object, 4);
       const float intensity = hit ? b.intensity : nan;
       std::memcpy(at + 22, &intensity, 4);
+      std::memcpy(at + 26, &b.time, 4);
       at += kBinaryPointBytes;
     }
     out_.write(buffer_.data(), buffer_.size());
     return;
   }
-  // ASCII: the longest line is 5 floats of at most 15 characters, a ring and an object index.
-  buffer_.resize(beams.size() * 112);
+  // ASCII: the longest line is 6 floats of at most 15 characters, a ring and an object index.
+  buffer_.resize(beams.size() * 128);
   char* at = buffer_.data();
   for (std::size_t i = 0; i < beams.size(); ++i) {
     const BeamReturn& b = beams[i];
@@ -110,6 +113,8 @@ void ScanWriter::write(std::uint64_t first, std::span<const BeamReturn> beams) {
     at = std::to_chars(at, at + 16, hit ? b.object : -1).ptr;
     *at++ = ' ';
     at = appendFloat(at, hit ? b.intensity : nan);
+    *at++ = ' ';
+    at = appendFloat(at, b.time);
     *at++ = '\n';
   }
   out_.write(buffer_.data(), std::size_t(at - buffer_.data()));

@@ -20,6 +20,7 @@ struct BeamReturn {
   float x, y, z;        // the return in the world frame (meaningless without one)
   std::int32_t object;  // the scene's object index (quads: objects + quad index); -1 without a return
   float intensity = 0;  // reflectivity |cos theta| / range^2, in 1/m^2 (robot/lidar.h); without a return, unused
+  float time = 0;       // seconds from the sweep's start to the beam's firing (every beam, returned or not)
 };
 
 // The shape of a scan: poses, each a grid of rings (channels) x azimuths. Beams are numbered in
@@ -35,7 +36,7 @@ struct ScanLayout {
 };
 
 // The most beams one scan file holds: 2^31 - 1, PCD's point count as PCL indexes it (a signed
-// 32-bit index), and at 22 to 60 bytes a beam already 47 to 130 GB of output.
+// 32-bit index), and at 30 to 70 bytes a beam already 64 to 150 GB of output.
 inline constexpr std::uint64_t kMaxScanBeams = (std::uint64_t{1} << 31) - 1;
 
 // A whole scan in memory, for tests and the benchmark (the tools stream).
@@ -56,15 +57,16 @@ ScanFormat scanFormatFor(const std::string& path);
 
 // Writes one scan in beam order: the header when made, then each block of beams as it comes.
 //
-// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object,intensity`, one row per beam; `range`
-// is `inf` and x, y, z, object and intensity are empty for no return (%.9g numbers).
+// CSV: header `pose,ring,azimuth,elevation,range,x,y,z,object,intensity,time`, one row per beam;
+// `range` is `inf` and x, y, z, object and intensity are empty for no return (%.9g numbers); every
+// beam has its time.
 //
 // PCD v0.7, organised: WIDTH = azimuths, HEIGHT = rings x poses (row = pose * rings + ring); fields
-// `x y z range ring object intensity` (F F F F U I F, sizes 4 4 4 4 2 4 4); x, y, z, range and
-// intensity are nan for no return, object -1; points in the world frame, so VIEWPOINT is the
-// identity. `DATA ascii`: one point a line, floats in their shortest round-trip text. `DATA binary`:
-// PCL's layout, each point its fields packed in order (26 bytes, little-endian as PCL writes on
-// x86-64), no padding.
+// `x y z range ring object intensity time` (F F F F U I F F, sizes 4 4 4 4 2 4 4 4); x, y, z, range
+// and intensity are nan for no return, object -1, time the beam's firing time either way; points
+// in the world frame, so VIEWPOINT is the identity. `DATA ascii`: one point a line, floats in their
+// shortest round-trip text. `DATA binary`: PCL's layout, each point its fields packed in order (30
+// bytes, little-endian as PCL writes on x86-64), no padding.
 class ScanWriter {
  public:
   ScanWriter(OutputStream& out, ScanFormat format, PcdData data, const ScanLayout& layout);

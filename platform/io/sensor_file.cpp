@@ -76,7 +76,8 @@ std::vector<double> fanAngles(const BeamFan& fan) {
 SensorDescription parseSensor(std::string_view text, const std::string& file) {
   const Reader in(file);
   const Json root = json::parse(text, in);
-  in.object(root, "", {"pose", "horizontal", "vertical", "elevations", "range", "noise", "intensity_noise"});
+  in.object(root, "",
+            {"pose", "horizontal", "vertical", "elevations", "range", "noise", "intensity_noise", "rotation_rate"});
   SensorDescription sensor;
   sensor.file = file;
   sensor.pose = readPose(in, in.required(root, "", "pose"));
@@ -138,6 +139,11 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
                     "a relative standard deviation lies in [0, 1]");
     if (const Json* seed = in.optional(*noise, "seed"))
       sensor.intensityNoiseSeed = in.unsignedInteger(*seed, "intensity_noise.seed");
+  }
+  if (const Json* rate = in.optional(root, "rotation_rate")) {
+    sensor.rotationRate = in.numberIn(*rate, "rotation_rate", 0, kMaxRotationRate,
+                                      "a rotation rate lies in [0, 1e6] revolutions per second (0: every beam "
+                                      "of a sweep at the pose's instant)");
   }
   return sensor;
 }

@@ -7,7 +7,8 @@
 //    "vertical": {"samples": M, "min_angle": e0, "max_angle": e1}   or   "elevations": [e, ...],
 //    "range": {"min": r0, "max": r1, "resolution": q},
 //    "noise": {"mean": m, "stddev": s, "seed": k},
-//    "intensity_noise": {"stddev": s, "seed": k}}
+//    "intensity_noise": {"stddev": s, "seed": k},
+//    "rotation_rate": hz}
 //
 // The reader is strict: a missing or unknown key, a wrong type or a value breaking a rule is a
 // SensorError naming the file, the key path (`horizontal.samples`), the value and the rule.
@@ -57,7 +58,17 @@ struct SensorDescription {
   // 0 = none. Its own seed, so that adding it changes no range.
   double intensityNoiseStddev = 0;
   std::uint64_t intensityNoiseSeed = 0;
+  // Revolutions per second of a spinning sensor; 0: every beam of a sweep fires at the pose's
+  // instant. With a rate, column k of a sweep fires k / (samples x rate) seconds after its start.
+  double rotationRate = 0;
+
+  // Seconds from the sweep's start to the firing of the beams of `column`.
+  double columnTime(std::size_t column) const {
+    return rotationRate > 0 ? double(column) / (double(horizontal.samples) * rotationRate) : 0.0;
+  }
 };
+
+inline constexpr double kMaxRotationRate = 1e6;
 
 // Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).
 inline constexpr int kMaxHorizontalSamples = 1 << 20;

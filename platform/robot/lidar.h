@@ -2,7 +2,8 @@
 // traced from every robot pose into a scene built in Embree, the first hit taken as the return, with
 // ROS LaserScan semantics: a beam with no hit, or whose measured range lies outside [min, max], is
 // no return (+inf), never clamped; Gaussian noise (from the seed, per beam) is added to returns
-// only; ranges are then rounded to the resolution.
+// only; ranges are then rounded to the resolution. A spinning sensor's beams carry their firing
+// time, and with timed poses are traced from where the moving sensor is then (sensor_motion.h).
 #pragma once
 
 #include "io/poses_file.h"
@@ -38,9 +39,13 @@ class Lidar {
   // `tracingSeconds`, when given, receives the wall time spent tracing (the blocks' own time,
   // which overlaps the sink's). `firstPose` numbers poses[0] in a larger scan traced in parts (the
   // Python package's shards): the noise of pose i is that of pose firstPose + i, beam numbers
-  // handed to `sink` still count from 0.
+  // handed to `sink` still count from 0. `sweeps`: the sweeps of poses[0], ..., poses[sweeps - 1]
+  // only, the poses after them the rest of the path a moving sensor follows (sensor_motion.h; a
+  // shard's poses reach to the first after its last sweep's end, so that its beams are traced from
+  // where the whole scan traces them).
+  static constexpr std::size_t kEveryPose = std::size_t(-1);
   void scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads = 0, double* tracingSeconds = nullptr,
-            std::uint64_t firstPose = 0) const;
+            std::uint64_t firstPose = 0, std::size_t sweeps = kEveryPose) const;
   // The whole scan in memory (tests and the benchmark; the tool streams).
   io::ScanTable scan(std::span<const io::RobotPose> poses, int threads = 0) const;
 

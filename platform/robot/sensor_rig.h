@@ -29,17 +29,25 @@ inline Vec3d beamDirection(double azimuth, double elevation) {
   return {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth), std::sin(elevation)};
 }
 
+// The sensor's rotation on the robot: Rz(yaw) Ry(pitch) Rx(roll) (ROS's fixed-axis roll, pitch, yaw).
+inline app::Matrix3d mountRotation(const io::SensorPose& mount) {
+  return app::rotationAboutZ(mount.yaw) * (app::rotationAboutY(mount.pitch) * app::rotationAboutX(mount.roll));
+}
+
 // World from sensor: the robot at (x, y, z) turned by yaw about +Z, carrying the sensor at its
-// mounting position turned by Rz(yaw) Ry(pitch) Rx(roll) (ROS's fixed-axis roll, pitch, yaw).
-inline SensorFrame sensorFrame(const io::SensorPose& mount, const io::RobotPose& pose) {
+// mounting position turned by `mounted` (mountRotation(mount), made once by callers that place
+// many beams).
+inline SensorFrame sensorFrame(const io::SensorPose& mount, const app::Matrix3d& mounted, const io::RobotPose& pose) {
   const app::Matrix3d robot = app::rotationAboutZ(pose.yaw);
   SensorFrame frame;
-  frame.rotation =
-      robot * (app::rotationAboutZ(mount.yaw) * (app::rotationAboutY(mount.pitch) * app::rotationAboutX(mount.roll)));
-  const SensorFrame robotOnly{{}, robot};
-  const Vec3d mounted = robotOnly.rotate(mount.position);
-  frame.origin = {pose.x + mounted[0], pose.y + mounted[1], pose.z + mounted[2]};
+  frame.rotation = robot * mounted;
+  const Vec3d position = robot.apply(Vec3d{mount.position[0], mount.position[1], mount.position[2]});
+  frame.origin = {pose.x + position[0], pose.y + position[1], pose.z + position[2]};
   return frame;
+}
+
+inline SensorFrame sensorFrame(const io::SensorPose& mount, const io::RobotPose& pose) {
+  return sensorFrame(mount, mountRotation(mount), pose);
 }
 
 }  // namespace revolve::robot

@@ -8,6 +8,7 @@ RaycastingScene     Open3D's RaycastingScene (0.19) with exact surfaces of revol
 Scene, Lidar        a scene file and revolve-lidar's range-finder, bit for bit the tool's scans
 ScanFile            a scan written as revolve-lidar writes it (PCD or CSV), shard by shard
 scan_shard          one shard of a scan traced from files, loaded once per process
+shard_poses         the poses one shard of a scan needs (a moving sensor's path past its sweeps)
 cylinder_clearance  revolve-clearance's robot clearance
 read_poses          a POSES.csv file as the tools read it
 tessellate          a profile swept into a triangle mesh (for triangle ray casters)
@@ -15,7 +16,7 @@ tessellate          a profile swept into a triangle mesh (for triangle ray caste
 
 from ._mesh import tessellate
 from ._pinhole import create_rays_pinhole as _create_rays_pinhole
-from ._shards import scan_shard
+from ._shards import scan_shard, shard_poses
 from ._revolve import (
     Lidar,
     ProfileError,
@@ -39,5 +40,6 @@ __all__ = [
     "embree_version",
     "read_poses",
     "scan_shard",
+    "shard_poses",
     "tessellate",
 ]

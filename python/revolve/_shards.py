@@ -5,7 +5,9 @@ after reuses them."""
 import os
 import threading
 
-from ._revolve import Lidar, Scene
+import numpy as np
+
+from ._revolve import Lidar, Scene, read_poses
 
 _loaded = {}
 _lock = threading.Lock()
@@ -38,10 +40,41 @@ def _scene_and_lidar(scene, sensor):
         return _loaded[key]
 
 
-def scan_shard(scene, sensor, poses, first_pose=0, threads=0):
-    """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose) with the scene and sensor files
-    loaded once per process: the arrays a ScanFile writes (ranges, points, ids, intensity) of poses
-    first_pose, first_pose + 1, ... of a scan, each with its own noise."""
+def scan_shard(scene, sensor, poses, first_pose=0, threads=0, sweeps=None):
+    """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose, sweeps) with the scene and sensor
+    files loaded once per process: the arrays a ScanFile writes (ranges, points, ids, intensity,
+    time) of poses first_pose, first_pose + 1, ... of a scan, each with its own noise. `poses` as
+    shard_poses gives them, `sweeps` the shard's count."""
     built, lidar = _scene_and_lidar(_path(scene, "scene"), _path(sensor, "sensor"))
-    scan = lidar.scan(built, poses, threads=threads, first_pose=first_pose)
-    return {key: scan[key] for key in ("ranges", "points", "ids", "intensity")}
+    scan = lidar.scan(built, poses, threads=threads, first_pose=first_pose, sweeps=sweeps)
+    return {key: scan[key] for key in ("ranges", "points", "ids", "intensity", "time")}
+
+
+def shard_poses(poses, first, count, lidar):
+    """The poses a shard of `count` sweeps from pose `first` needs: poses[first : first + count] and,
+    for a sensor that moves during its sweeps (a rotation_rate and poses (N, 5) carrying times),
+    the poses after them up to the first after its last sweep's end, so that the shard's beams are
+    traced from where the whole scan traces them (Lidar.scan's `sweeps` then counts the shard's own).
+    `poses`: an (N, 3), (N, 4) or (N, 5) array, or a POSES.csv path (read_poses)."""
+    if not isinstance(lidar, Lidar):
+        raise TypeError(f"lidar: a {type(lidar).__name__}; expected a revolve.Lidar")
+    if isinstance(poses, (str, bytes, os.PathLike)):
+        poses = read_poses(poses)
+    try:
+        poses = np.asarray(poses, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError("poses: not an (N, 3), (N, 4) or (N, 5) array of numbers") from None
+    if poses.ndim != 2 or poses.shape[1] not in (3, 4, 5):
+        raise ValueError(f"poses: shape {poses.shape}; expected (N, 3), (N, 4) or (N, 5)")
+    for name, value in (("first", first), ("count", count)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+            raise TypeError(f"{name}: a {type(value).__name__}; expected a whole number")
+    if not 0 <= first < len(poses):
+        raise ValueError(f"first = {first}: the poses are numbered 0 to {len(poses) - 1}")
+    if not 1 <= count <= len(poses) - first:
+        raise ValueError(f"count = {count}: a shard from pose {first} holds 1 to {len(poses) - first} poses")
+    end = first + count
+    if poses.shape[1] == 5 and lidar.rotation_rate > 0 and end < len(poses):
+        last_end = poses[end - 1, 4] + lidar.sweep_duration
+        end = min(len(poses), int(np.searchsorted(poses[:, 4], last_end, side="right")) + 1)
+    return poses[first:end]

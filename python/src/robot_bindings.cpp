@@ -77,23 +77,27 @@ std::shared_ptr<ToolScene> sceneOf(py::handle scene) {
   return std::make_shared<ToolScene>(pathArgument(scene, "scene"), "mibit", 64);
 }
 
-// Poses from a POSES.csv path (the tools' reader) or an (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw]
-// array, checked by the reader's rules.
+// Poses from a POSES.csv path (the tools' reader) or an (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or
+// (N, 5) [x, y, z, yaw, time] array, checked by the reader's rules.
 std::vector<io::RobotPose> posesOf(py::handle poses) {
   if (py::isinstance<py::str>(poses) || py::isinstance<py::bytes>(poses) || py::hasattr(poses, "__fspath__")) {
     return io::readPosesCsv(pathArgument(poses, "poses"));
   }
-  const py::array array = arrayArgument(poses, "poses", "an (N, 3) or (N, 4) array of poses, or a POSES.csv path");
+  const py::array array =
+      arrayArgument(poses, "poses", "an (N, 3), (N, 4) or (N, 5) array of poses, or a POSES.csv path");
   const py::ssize_t columns = array.ndim() == 2 ? array.shape(1) : 0;
-  if (columns != 3 && columns != 4) {
+  if (columns != 3 && columns != 4 && columns != 5) {
     throw py::value_error("poses: shape " + shapeText(array) +
-                          "; expected (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv path");
+                          "; expected (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or (N, 5) [x, y, z, yaw, time], "
+                          "or a POSES.csv path");
   }
   const py::array_t<double> values = copiedMatrix(array, "poses", -1, columns, 1);
   std::vector<io::RobotPose> result(std::size_t(values.shape(0)));
-  const char* names[4] = {"x", "y", columns == 4 ? "z" : "yaw", "yaw"};
+  const bool withZ = columns >= 4, timed = columns == 5;
+  const py::ssize_t yawColumn = withZ ? 3 : 2;
+  const char* names[3] = {"x", "y", "z"};
   for (std::size_t i = 0; i < result.size(); ++i) {
-    for (py::ssize_t c = 0; c + 1 < columns; ++c) {  // the positions; yaw may be any finite angle
+    for (py::ssize_t c = 0; c < yawColumn; ++c) {  // the positions; yaw may be any finite angle
       if (!(std::abs(values.at(i, c)) <= app::kMaxWorldCoordinate)) {
         char text[32];
         std::snprintf(text, sizeof text, "%.9g", values.at(i, c));
@@ -103,16 +107,34 @@ std::vector<io::RobotPose> posesOf(py::handle poses) {
     }
     io::RobotPose& p = result[i];
     p.x = values.at(i, 0), p.y = values.at(i, 1);
-    p.z = columns == 4 ? values.at(i, 2) : 0.0;
-    p.yaw = values.at(i, columns - 1);
+    p.z = withZ ? values.at(i, 2) : 0.0;
+    p.yaw = values.at(i, yawColumn);
+    if (timed) {
+      p.time = values.at(i, 4);
+      if (const char* problem = io::poseTimeProblem(p.time, i == 0 ? std::nan("") : result[i - 1].time)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", p.time);
+        std::string message = "poses[" + std::to_string(i) + ", 4]: time = " + text + " " + problem;
+        if (i > 0) {
+          std::snprintf(text, sizeof text, "%.17g", result[i - 1].time);
+          message += std::string(" (poses[") + std::to_string(i - 1) + ", 4] = " + text + ")";
+        }
+        throw py::value_error(message);
+      }
+    }
   }
   return result;
 }
 
+// (N, 4) [x, y, z, yaw], or (N, 5) with the time when the poses carry it.
 py::array_t<double> posesArray(const std::vector<io::RobotPose>& poses) {
-  py::array_t<double> array(std::vector<py::ssize_t>{py::ssize_t(poses.size()), 4});
+  const bool timed = !poses.empty() && poses.front().timed();
+  py::array_t<double> array(std::vector<py::ssize_t>{py::ssize_t(poses.size()), timed ? 5 : 4});
   double* out = array.mutable_data();
-  for (const io::RobotPose& p : poses) *out++ = p.x, *out++ = p.y, *out++ = p.z, *out++ = p.yaw;
+  for (const io::RobotPose& p : poses) {
+    *out++ = p.x, *out++ = p.y, *out++ = p.z, *out++ = p.yaw;
+    if (timed) *out++ = p.time;
+  }
   return array;
 }
 
@@ -187,30 +209,33 @@ io::SensorDescription sensorOf(py::handle sensor) {
 
 // A scan's returns in numpy arrays shaped (poses, rings, azimuths), written block by block.
 struct ScanArrays {
-  py::array_t<float> ranges, points, intensity;
+  py::array_t<float> ranges, points, intensity, time;
   py::array_t<std::int32_t> ids;
   py::array_t<std::uint16_t> rings;
 };
 
 ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimuths) {
   const std::vector<py::ssize_t> shape{py::ssize_t(poses), py::ssize_t(rings), py::ssize_t(azimuths)};
-  return {newArray<float>(shape), newArray<float>(shape, 3), newArray<float>(shape), newArray<std::int32_t>(shape),
-          newArray<std::uint16_t>(shape)};
+  return {newArray<float>(shape), newArray<float>(shape, 3),     newArray<float>(shape),
+          newArray<float>(shape), newArray<std::int32_t>(shape), newArray<std::uint16_t>(shape)};
 }
 
 py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, py::handle threadsObject,
-              py::handle firstPoseObject) {
+              py::handle firstPoseObject, py::handle sweepsObject) {
   const int threads = threadsArgument(threadsObject, "threads", false);
   // A scan holds fewer than 2^31 beams: no pose number beyond that has a beam of its own.
   const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, io::kMaxScanBeams);
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
+  const std::size_t sweeps =
+      sweepsObject.is_none() ? poses.size() : std::size_t(unsignedArgument(sweepsObject, "sweeps", 0, poses.size()));
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
   const robot::Lidar lidar(*scene->built, self.sensor);
-  const io::ScanLayout layout = lidar.layout(poses.size());
+  const io::ScanLayout layout = lidar.layout(sweeps);
   const std::size_t rings = layout.rings(), azimuths = layout.azimuths.size();
-  ScanArrays a = newScanArrays(poses.size(), rings, azimuths);
+  ScanArrays a = newScanArrays(sweeps, rings, azimuths);
   float* ranges = a.ranges.mutable_data();
   float* intensity = a.intensity.mutable_data();
+  float* times = a.time.mutable_data();
   float* points = a.points.mutable_data();
   std::int32_t* ids = a.ids.mutable_data();
   std::uint16_t* ringOf = a.rings.mutable_data();
@@ -230,10 +255,11 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
             points[3 * b + 2] = hit ? beam.z : nan;
             ids[b] = beam.object;
             intensity[b] = hit ? beam.intensity : nan;
+            times[b] = beam.time;
             ringOf[b] = std::uint16_t(b / azimuths % rings);
           }
         },
-        threads, nullptr, firstPose);
+        threads, nullptr, firstPose, sweeps);
   }
   py::dict result;
   result["points"] = a.points;
@@ -241,6 +267,7 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
   result["rings"] = a.rings;
   result["ids"] = a.ids;
   result["intensity"] = a.intensity;
+  result["time"] = a.time;
   return result;
 }
 
@@ -284,13 +311,13 @@ struct ScanFile {
     const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, layout.poses);
     const std::string expected = "a scan dict of Lidar.scan for this sensor (ranges (P, " +
                                  std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
-                                 "), points, ids, intensity)";
+                                 "), points, ids, intensity, time)";
     if (!py::isinstance<py::dict>(scanObject)) {
       throw py::type_error("scan: a " + std::string(py::str(py::type::handle_of(scanObject).attr("__name__"))) +
                            "; expected " + expected);
     }
     const py::dict scan = py::reinterpret_borrow<py::dict>(scanObject);
-    for (const char* key : {"ranges", "points", "ids", "intensity"}) {
+    for (const char* key : {"ranges", "points", "ids", "intensity", "time"}) {
       if (!scan.contains(key)) throw py::value_error(std::string("scan: no \"") + key + "\"; expected " + expected);
     }
     const auto array = [&](const char* key) {
@@ -308,11 +335,12 @@ struct ScanFile {
       }
     };
     const py::array_t<float> ranges = converted(float{}, "ranges"), points = converted(float{}, "points"),
-                             intensity = converted(float{}, "intensity");
+                             intensity = converted(float{}, "intensity"), times = converted(float{}, "time");
     const py::array_t<std::int32_t> ids = converted(std::int32_t{}, "ids");
     const std::size_t perPose = layout.beamsPerPose();
     if (ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
-        points.size() != 3 * ranges.size() || ids.size() != ranges.size() || intensity.size() != ranges.size()) {
+        points.size() != 3 * ranges.size() || ids.size() != ranges.size() || intensity.size() != ranges.size() ||
+        times.size() != ranges.size()) {
       throw py::value_error(path + ": " + expected + " is expected");
     }
     const std::uint64_t poses = std::uint64_t(ranges.shape(0));
@@ -323,8 +351,8 @@ struct ScanFile {
     }
     std::vector<io::BeamReturn> beams(std::size_t(ranges.size()));
     for (std::size_t b = 0; b < beams.size(); ++b) {
-      beams[b] = {ranges.data()[b],         points.data()[3 * b], points.data()[3 * b + 1],
-                  points.data()[3 * b + 2], ids.data()[b],        intensity.data()[b]};
+      beams[b] = {ranges.data()[b], points.data()[3 * b], points.data()[3 * b + 1], points.data()[3 * b + 2],
+                  ids.data()[b],    intensity.data()[b],  times.data()[b]};
     }
     writer->write(firstPose * perPose, beams);
     nextPose += poses;
@@ -414,14 +442,18 @@ scan(scene, poses) traces every beam from every pose with revolve-lidar's conven
 LaserScan: no return is inf, never clamped; seeded per-beam noise) and returns a dict of arrays
 shaped (poses, rings, azimuths): ranges (float32, inf for no return), points (float32, (..., 3),
 world frame, nan for no return), intensity (float32, reflectivity |cos| / range^2 in 1/m^2, nan
-for no return), rings (uint16) and ids (int32: the scene's object index, quads after the objects,
--1 for no return), bit for bit revolve-lidar's.)")
+for no return), time (float32, seconds from the sweep's start to the beam's firing: 0 without a
+rotation_rate), rings (uint16) and ids (int32: the scene's object index, quads after the objects,
+-1 for no return), bit for bit revolve-lidar's. With a rotation_rate and poses that carry times,
+each beam is traced from where the moving sensor is when it fires (docs/robot.md).)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
-           py::arg("first_pose") = py::int_(0),
-           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw] or (N, 4) [x, y, z, yaw], or a POSES.csv "
-           "path; "
-           "first_pose: the number of poses[0] in a scan traced in parts (its noise is that pose's).")
+           py::arg("first_pose") = py::int_(0), py::arg("sweeps") = py::none(),
+           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or (N, 5) "
+           "[x, y, z, yaw, time], or a POSES.csv path; first_pose: the number of poses[0] in a scan traced in parts "
+           "(its noise is that pose's); sweeps: trace the sweeps of poses[:sweeps] only (default all), the poses after "
+           "them the rest of the path a moving sensor follows (a part's poses reach past its last sweep's end: "
+           "shard_poses).")
       .def_property_readonly("azimuths",
                              [](const PySensor& s) {
                                const std::vector<double> a = io::fanAngles(s.sensor.horizontal);
@@ -432,9 +464,14 @@ for no return), rings (uint16) and ids (int32: the scene's object index, quads a
                                return py::array_t<double>(py::ssize_t(s.sensor.elevations.size()),
                                                           s.sensor.elevations.data());
                              })
-      .def_property_readonly("beams_per_pose", [](const PySensor& s) {
-        return std::size_t(s.sensor.horizontal.samples) * s.sensor.elevations.size();
-      });
+      .def_property_readonly(
+          "beams_per_pose",
+          [](const PySensor& s) { return std::size_t(s.sensor.horizontal.samples) * s.sensor.elevations.size(); })
+      .def_property_readonly("rotation_rate", [](const PySensor& s) { return s.sensor.rotationRate; })
+      .def_property_readonly(
+          "sweep_duration",
+          [](const PySensor& s) { return s.sensor.columnTime(std::size_t(s.sensor.horizontal.samples - 1)); },
+          "seconds from a sweep's first beam to its last (0 without a rotation_rate)");
 
   py::class_<ScanFile>(m, "ScanFile",
                        R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.
@@ -477,7 +514,9 @@ no obstacle), collides (bool), object (int64, -1 for none), point (float64 (N, 3
 nearest obstacle's surface), exact (bool: false where the clearance is a lower bound).)");
   m.def(
       "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathArgument(path, "path"))); },
-      py::arg("path"), "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw.");
+      py::arg("path"),
+      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw, or (N, 5) with the time "
+      "when the file has a time column.");
 }
 
 }  // namespace revolve::python

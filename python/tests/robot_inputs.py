@@ -16,6 +16,10 @@ NOISY_SENSOR = {
 }
 
 
+# The noisy sensor spinning at 10 Hz: a sweep lasts 0.1 s (column k fires k / 3600 s after its start).
+MOVING_SENSOR = {**NOISY_SENSOR, "rotation_rate": 10.0}
+
+
 def write_sensor(path, sensor=NOISY_SENSOR):
     path.write_text(json.dumps(sensor))
     return path
@@ -27,11 +31,19 @@ def corridor_poses(count):
     return np.stack([1 + 8 * s, 1.5 + 0.3 * np.sin(7 * s), 0.02 * np.cos(5 * s), 0.6 * np.sin(3 * s)], axis=1)
 
 
+def timed_corridor_poses(count, interval=0.04):
+    """corridor_poses with a time column: one pose every `interval` seconds from t = 1000 s, more often
+    than MOVING_SENSOR's sweeps, so that a sweep spans several segments of the path."""
+    return np.concatenate([corridor_poses(count), (1000 + interval * np.arange(count))[:, None]], axis=1)
+
+
 def write_poses(path, poses):
+    """(N, 4) poses, or (N, 5) with times, as POSES.csv."""
+    timed = poses.shape[1] == 5
     with open(path, "w") as out:
-        out.write("x,y,z,yaw\n")
-        for x, y, z, yaw in poses:
-            out.write(",".join(repr(float(v)) for v in (x, y, z, yaw)) + "\n")  # repr: exact, shortest
+        out.write("x,y,z,yaw,time\n" if timed else "x,y,z,yaw\n")
+        for pose in poses:
+            out.write(",".join(repr(float(v)) for v in pose) + "\n")  # repr: exact, shortest
     return path
 
 
@@ -54,15 +66,15 @@ def write_pole_scene(path):
 
 
 def read_binary_pcd(path):
-    """A binary PCD of revolve-lidar's fields (x y z range: float32, ring: uint16, object: int32, intensity: float32,
-    packed)."""
+    """A binary PCD of revolve-lidar's fields (x y z range: float32, ring: uint16, object: int32, intensity and
+    time: float32, packed)."""
     data = path.read_bytes()
     header_end = data.index(b"DATA binary\n") + len(b"DATA binary\n")
     header = data[:header_end].decode()
-    assert "FIELDS x y z range ring object intensity" in header
+    assert "FIELDS x y z range ring object intensity time\n" in header
     points = np.frombuffer(
         data[header_end:], dtype=np.dtype([("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("range", "<f4"), ("ring", "<u2"), ("object", "<i4"),
-                                     ("intensity", "<f4")])
+                                     ("intensity", "<f4"), ("time", "<f4")])
     )
     width = int(next(line.split()[1] for line in header.splitlines() if line.startswith("WIDTH")))
     return points, width

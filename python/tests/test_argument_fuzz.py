@@ -222,7 +222,7 @@ def make_case(seed, i, files, objects):
     function = m.pick(["add_revolution", "add_revolution", "add_triangles", "load", "cast_rays", "test_occlusions",
                        "count_intersections", "compute_closest_points", "compute_distance", "compute_signed_distance",
                        "compute_occupancy", "create_rays_pinhole", "Scene", "Lidar", "Lidar.scan", "ScanFile", "ScanFile.write",
-                       "cylinder_clearance", "read_poses", "scan_shard", "tessellate"])
+                       "cylinder_clearance", "read_poses", "scan_shard", "shard_poses", "tessellate"])
     args, kwargs = [], {}
 
     def maybe(name, make, p=0.6):
@@ -280,9 +280,10 @@ def make_case(seed, i, files, objects):
         args = [m.path("sensor") if m.chance(0.4) else m.sensor()]
         call = lambda: revolve.Lidar(*args)  # noqa: E731
     elif function == "Lidar.scan":
-        args = [m.pick([tool_scene, tool_scene, m.path("scene")]), m.path("poses") if m.chance(0.3) else m.array(m.pick([3, 4]), rows=(1, 3), valid_dtype="float64")]
+        args = [m.pick([tool_scene, tool_scene, m.path("scene")]), m.path("poses") if m.chance(0.3) else m.array(m.pick([3, 4, 5]), rows=(1, 3), valid_dtype="float64")]
         maybe("threads", m.threads, 0.5)
         maybe("first_pose", m.count, 0.3)
+        maybe("sweeps", lambda: m.pick([None, 0, 1, 2, 4, -1, 2**64, "1", 1.0, True]), 0.3)
         call = lambda: lidar.scan(*args, **kwargs)  # noqa: E731
     elif function == "ScanFile":
         name = m.pick(["out.pcd", "out.csv", "out.txt", "out", "missing/out.pcd", ""])
@@ -316,6 +317,11 @@ def make_case(seed, i, files, objects):
         args = [m.path("scene"), m.path("sensor"), m.path("poses") if m.chance(0.3) else m.array(3, rows=(1, 2), valid_dtype="float64"),
                 m.pick([0, 1, -1, None, 2**64]), m.threads()]
         call = lambda: revolve.scan_shard(*args)  # noqa: E731
+    elif function == "shard_poses":
+        args = [m.path("poses") if m.chance(0.3) else m.array(m.pick([3, 4, 5]), rows=(1, 4), valid_dtype="float64"),
+                m.pick([0, 1, 3, -1, 2**64, None, "0", 0.0, True]), m.pick([1, 2, 0, -1, 2**64, None, 1.5]),
+                m.pick([lidar, lidar, None, "sensor.json"])]
+        call = lambda: revolve.shard_poses(*args)  # noqa: E731
     else:  # tessellate
         args = [m.array(2, rows=(1, 6), valid_dtype="float64"), m.pick([3, 8, 2, 0, -1, 2.5, 8.0, "8", None, True, np.int64(8), float("nan")])]
         call = lambda: revolve.tessellate(*args)  # noqa: E731

@@ -188,5 +188,10 @@ def test_scene_files_sensors_and_poses():
     with pytest.raises(ValueError, match=r"horizontal.samples"):
         revolve.Lidar({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 0, "min_angle": 0, "max_angle": 0},
                        "range": {"min": 0, "max": 10}})
-    with pytest.raises(ValueError, match=r"poses: shape \(2, 5\); expected \(N, 3\) \[x, y, yaw\] or \(N, 4\)"):
+    with pytest.raises(ValueError, match=r"poses: shape \(2, 6\); expected \(N, 3\) \[x, y, yaw\], \(N, 4\)"):
+        revolve.cylinder_clearance(__file__, np.zeros((2, 6)), 0.3, 0, 1)
+    # (N, 5): the fifth column is the time, strictly increasing (the poses file's rule).
+    with pytest.raises(ValueError, match=r"poses\[1, 4\]: time = 0 does not increase: times are strictly increasing \(poses\[0, 4\] = 0\)"):
         revolve.cylinder_clearance(__file__, np.zeros((2, 5)), 0.3, 0, 1)
+    with pytest.raises(ValueError, match=r"poses\[0, 4\]: time = 2000000000000 is out of range: a pose's time is a number of seconds within \+-1e12"):
+        revolve.cylinder_clearance(__file__, np.array([[0, 0, 0, 0, 2e12]]), 0.3, 0, 1)

@@ -1,5 +1,6 @@
 """examples/python/dask_lidar.py on a two-worker LocalCluster: the PCD it writes is revolve-lidar's
-byte for byte, also when the worker tracing a shard is killed in the middle of it."""
+byte for byte, also when the worker tracing a shard is killed in the middle of it. The sensor spins
+and the poses carry times, so every shard also needs the poses past its own (revolve.shard_poses)."""
 
 import importlib.util
 import os
@@ -12,7 +13,7 @@ import pytest
 
 import revolve
 from conftest import SOURCE_DIR, run_tool
-from robot_inputs import corridor_poses, write_poses, write_sensor
+from robot_inputs import MOVING_SENSOR, timed_corridor_poses, write_poses, write_sensor
 
 distributed = pytest.importorskip("distributed", reason="Dask distributed (Debian: python3-distributed) is not installed")
 
@@ -38,8 +39,8 @@ def job(tmp_path_factory):
     folder = tmp_path_factory.mktemp("dask")
     job = {
         "scene": str(SOURCE_DIR / "scenes" / "robot_world.json"),
-        "sensor": str(write_sensor(folder / "sensor.json")),
-        "poses_file": write_poses(folder / "poses.csv", corridor_poses(48)),
+        "sensor": str(write_sensor(folder / "sensor.json", MOVING_SENSOR)),
+        "poses_file": write_poses(folder / "poses.csv", timed_corridor_poses(48)),
         "folder": folder,
     }
     job["poses"] = revolve.read_poses(job["poses_file"])
@@ -61,13 +62,13 @@ def test_a_worker_killed_mid_shard_loses_nothing_and_writes_nothing_twice(client
 
     # Shard 20 (poses 20 to 24), on its first attempt, says which process runs it and then takes
     # its time; the test kills that process meanwhile. Any later attempt traces normally.
-    def trace(scene, sensor, poses, first_pose, threads):
+    def trace(scene, sensor, poses, first_pose, threads, sweeps=None):
         if first_pose == 20 and not os.path.exists(str(marker)):
             with open(str(marker) + ".part", "w") as note:
                 note.write(str(os.getpid()))
             os.rename(str(marker) + ".part", str(marker))
             time.sleep(120)
-        return scan_shard(scene, sensor, poses, first_pose, threads)
+        return scan_shard(scene, sensor, poses, first_pose, threads, sweeps)
 
     killed = []
 

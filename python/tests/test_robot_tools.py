@@ -10,11 +10,13 @@ import pytest
 import revolve
 from conftest import run_tool
 from robot_inputs import (
+    MOVING_SENSOR,
     NOISY_SENSOR,
     POLE_AT,
     POLE_RADIUS,
     corridor_poses,
     read_binary_pcd,
+    timed_corridor_poses,
     write_pole_scene,
     write_poses,
     write_sensor,
@@ -55,10 +57,51 @@ def test_scan_is_revolve_lidars_bit_for_bit(world):
     assert scan["intensity"].dtype == np.float32 and scan["intensity"].shape == scan["ranges"].shape
     assert np.array_equal(scan["intensity"].ravel(), expected["intensity"], equal_nan=True)
     assert np.all(np.isnan(scan["intensity"].ravel()[~returns])) and np.all(scan["intensity"].ravel()[returns] >= 0)
+    assert scan["time"].dtype == np.float32 and not scan["time"].any()  # no rotation_rate: every beam at its pose's instant
+    assert np.array_equal(scan["time"].ravel(), expected["time"])
     # The same from the poses as an array, on one thread, with the scene as a path.
     again = lidar.scan(str(world["scene"]), revolve.read_poses(world["poses"]), threads=1)
-    for key in ("ranges", "points", "ids", "rings", "intensity"):
+    for key in ("ranges", "points", "ids", "rings", "intensity", "time"):
         assert np.array_equal(again[key], scan[key], equal_nan=True), key
+
+
+@pytest.fixture(scope="module")
+def moving(tmp_path_factory):
+    """The noisy sensor spinning at 10 Hz on a robot whose poses carry times, 0.04 s apart."""
+    folder = tmp_path_factory.mktemp("moving")
+    poses = timed_corridor_poses(12)
+    return {"sensor": write_sensor(folder / "sensor.json", MOVING_SENSOR), "poses_array": poses,
+            "poses": write_poses(folder / "poses.csv", poses), "folder": folder}
+
+
+def test_a_moving_sensors_scan_is_revolve_lidars_bit_for_bit_whole_or_in_shards(world, moving):
+    cli = moving["folder"] / "cli.pcd"
+    run_tool("revolve-lidar", world["scene"], "--sensor", moving["sensor"], "--poses", moving["poses"], "-o", cli, "--pcd-data", "binary")
+    expected, _ = read_binary_pcd(cli)
+    lidar, scene = revolve.Lidar(moving["sensor"]), revolve.Scene(world["scene"])
+    poses = revolve.read_poses(moving["poses"])
+    assert poses.shape == (12, 5) and np.array_equal(poses, moving["poses_array"])
+    assert lidar.rotation_rate == 10 and lidar.sweep_duration == pytest.approx(359 / 3600, rel=1e-15)
+    scan = lidar.scan(scene, poses)
+    # Column k fires k / (360 x 10 Hz) after its sweep starts, every ring of it at once.
+    want = np.broadcast_to(np.float32(np.arange(360) / 3600.0), scan["time"].shape)
+    assert np.array_equal(scan["time"], want)
+    assert np.array_equal(scan["time"].ravel(), expected["time"])
+    assert np.array_equal(np.where(np.isfinite(scan["ranges"]), scan["ranges"], np.nan).ravel(), expected["range"], equal_nan=True)
+    assert np.array_equal(scan["points"][..., 0].ravel(), expected["x"], equal_nan=True)
+    # At rest (the same sensor and poses without their times) the scan differs: the motion is in it.
+    rest = lidar.scan(scene, poses[:, :4])
+    assert not np.array_equal(rest["ranges"], scan["ranges"])
+    assert np.array_equal(rest["time"], scan["time"])
+    # In shards: each traces its sweeps from the poses shard_poses gives (past its last sweep's end).
+    out = moving["folder"] / "shards.pcd"
+    scan_file = revolve.ScanFile(out, lidar, len(poses), data="binary")
+    for first, count in ((0, 5), (5, 1), (6, 6)):
+        shard = revolve.shard_poses(poses, first, count, lidar)
+        assert len(shard) > count or first + count == len(poses)
+        scan_file.write(first, revolve.scan_shard(world["scene"], moving["sensor"], shard, first, 1, sweeps=count))
+    scan_file.commit()
+    assert out.read_bytes() == cli.read_bytes()
 
 
 @pytest.mark.parametrize("data", ["ascii", "binary"])

@@ -83,14 +83,15 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams (1 ring x 3 azimuths)"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
   ASSERT_EQ(rows.size(), 10u);
-  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity");
+  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity,time");
   // Pose 0, beam 1 looks along +x at the pole: 2 - 0.25 = 1.75; pose 1 from 0.5 further on: 1.25;
   // pose 2 faces -x: nothing. Beams at +-pi/2 see nothing (the floor is below the plane).
   // Head-on (the pole's normal along the beam), reflectivity 1: intensity 1 / range^2.
-  expectRow(rows[2], {0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0, 1 / (1.75 * 1.75)});
-  expectRow(rows[5], {1, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0, 1 / (1.25 * 1.25)});
-  EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,,");
-  EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,,");
+  // No rotation_rate: every beam at the pose's instant, time 0.
+  expectRow(rows[2], {0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0, 1 / (1.75 * 1.75), 0});
+  expectRow(rows[5], {1, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0, 1 / (1.25 * 1.25), 0});
+  EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,,,0");
+  EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,,,0");
 
   const testing::ProcessResult pcd =
       runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv",
@@ -100,8 +101,8 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(cloud, HasSubstr("\nWIDTH 3\nHEIGHT 3\n"));
   const std::vector<std::string> points = lines(cloud);
   ASSERT_EQ(points.size(), 11u + 9);  // the header's 11 lines, then WIDTH x HEIGHT points
-  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0, 1 / (1.75 * 1.75)}, ' ');
-  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 -1 nan");
+  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0, 1 / (1.75 * 1.75), 0}, ' ');
+  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 -1 nan 0");
   // A PNG (its signature, then the IHDR chunk's big-endian width and height), of a readable size.
   const std::string png = readWholeFile(dir / "scan.png");
   ASSERT_GT(png.size(), 24u);
@@ -115,6 +116,42 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_GT(bigEndian(20), 200u);
   EXPECT_EQ(dir.entries(),
             (std::set<std::string>{"scene.json", "sensor.json", "poses.csv", "scan.csv", "scan.pcd", "scan.png"}));
+}
+
+// A spinning sensor on a robot driving at 2 m/s along +x toward the pole, poses with times: each
+// beam fires at column / (samples x rate) and is traced from where the sensor is then; the path
+// ends at the last pose, whose sweep is traced at rest.
+TEST(RevolveLidarCliTest, AMovingSensorsBeamsCarryTheirTimeAndRangeFromWhereTheyFire) {
+  const ScratchDirectory dir;
+  dir.write("scene.json", kScene);
+  // 5 beams over [-0.01, 0.01] rad at 10 Hz: column k fires at k / 50 s.
+  dir.write("sensor.json", R"({
+    "pose": {"position": [0, 0, 0.5], "yaw": 0},
+    "horizontal": {"samples": 5, "min_angle": -0.01, "max_angle": 0.01},
+    "range": {"min": 0.1, "max": 30},
+    "rotation_rate": 10
+  })");
+  dir.write("poses.csv", "time,x,y,yaw\n100,0,0,0\n100.25,0.5,0,0\n100.5,1,0,0\n");
+  const testing::ProcessResult run = runProcess(
+      REVOLVE_LIDAR_PATH,
+      {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv", "-o", dir / "scan.csv"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
+  ASSERT_EQ(rows.size(), 16u);
+  for (int pose = 0; pose < 3; ++pose) {
+    for (int k = 0; k < 5; ++k) {
+      const std::vector<double> row = numbers(rows[std::size_t(1 + 5 * pose + k)]);
+      const double time = k / 50.0, azimuth = -0.01 + 0.005 * k;
+      const double x = pose < 2 ? 0.5 * pose + 2 * time : 1;  // the sensor when the beam fires
+      // The pole (radius 0.25 at (2, 0)) along the beam from (x, 0): the nearer root of
+      // |(x, 0) + t (cos a, sin a) - (2, 0)| = 0.25.
+      const double b = (x - 2) * std::cos(azimuth), c = (x - 2) * (x - 2) - 0.0625;
+      const double range = -b - std::sqrt(b * b - c);
+      EXPECT_EQ(float(row[10]), float(time)) << rows[std::size_t(1 + 5 * pose + k)];
+      EXPECT_NEAR(row[4], range, 1e-6) << rows[std::size_t(1 + 5 * pose + k)];
+      EXPECT_NEAR(row[5], x + range * std::cos(azimuth), 1e-6);
+    }
+  }
 }
 
 struct BadRun {
@@ -184,6 +221,11 @@ std::vector<BadRun> badLidarRuns() {
       {"PlotExtension", plotJpg, R"(scan.jpg: unsupported plot extension ".jpg")"},
       {"ThreadsZero", threadsZero, "--threads: 0 is out of range: it must lie in [1, 1024] (see --help)"},
       {"PlotRingBeyondTheSensors", plotRing, "sensor.json has 1 ring, numbered from 0"},
+      {"RotationRateNegative", kLidarArgs, "sensor.json: rotation_rate: -10 is out of range: a rotation rate", kScene,
+       replaced(kSensor, R"("range")", R"("rotation_rate": -10, "range")")},
+      {"TimesNotIncreasing", kLidarArgs,
+       "poses.csv:3: time = \"0.1\" does not increase: times are strictly increasing (the pose on line 2 is at 0.2)",
+       kScene, kSensor, "x,y,yaw,time\n0,0,0,0.2\n1,0,0,0.1\n"},
   };
 }
 

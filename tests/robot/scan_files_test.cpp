@@ -29,11 +29,12 @@ ScanTable sampleScan() {
   scan.elevations = {-0.1, 0.2};
   scan.poses = 2;
   for (int i = 0; i < 12; ++i) {
+    const float time = 0.001f * float(i % 3) / 3;  // every beam fired, returned or not
     if (i % 4 == 3) {
-      scan.beams.push_back({INFINITY, 0, 0, 0, -1});
+      scan.beams.push_back({INFINITY, 0, 0, 0, -1, 0, time});
     } else {
       scan.beams.push_back({1.25f + 0.1f * i, 0.1f * i - 0.3f, 1.0f / (i + 3), -0.015625f * i, std::int32_t(i % 5),
-                            0.7f / float(i + 1)});
+                            0.7f / float(i + 1), time});
     }
   }
   return scan;
@@ -61,18 +62,19 @@ TEST(ScanFilesTest, CsvReadsBackBeamForBeam) {
   writeScan(dir / "scan.csv", scan);
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
   ASSERT_EQ(rows.size(), 13u);
-  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity");
+  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity,time");
   std::size_t row = 1;
   for (std::size_t pose = 0; pose < 2; ++pose) {
     for (std::size_t ring = 0; ring < 2; ++ring) {
       for (std::size_t column = 0; column < 3; ++column, ++row) {
         const std::vector<std::string> f = split(rows[row], ',');
-        ASSERT_EQ(f.size(), 10u) << rows[row];
+        ASSERT_EQ(f.size(), 11u) << rows[row];
         EXPECT_EQ(std::stoul(f[0]), pose);
         EXPECT_EQ(std::stoul(f[1]), ring);
         EXPECT_EQ(std::stod(f[2]), scan.azimuths[column]);
         EXPECT_EQ(std::stod(f[3]), scan.elevations[ring]);
         const BeamReturn& beam = scan.at(pose, ring, column);
+        EXPECT_EQ(std::stof(f[10]), beam.time);
         if (std::isinf(beam.range)) {
           EXPECT_EQ(f[4], "inf");
           EXPECT_EQ(f[5] + f[6] + f[7] + f[8] + f[9], "");  // empty for no return
@@ -108,10 +110,10 @@ TEST(ScanFilesTest, PcdIsAnOrganisedCloudThatReadsBack) {
     ++at;
   }
   EXPECT_EQ(header["VERSION"], "0.7");
-  EXPECT_EQ(header["FIELDS"], "x y z range ring object intensity");
-  EXPECT_EQ(header["SIZE"], "4 4 4 4 2 4 4");
-  EXPECT_EQ(header["TYPE"], "F F F F U I F");
-  EXPECT_EQ(header["COUNT"], "1 1 1 1 1 1 1");
+  EXPECT_EQ(header["FIELDS"], "x y z range ring object intensity time");
+  EXPECT_EQ(header["SIZE"], "4 4 4 4 2 4 4 4");
+  EXPECT_EQ(header["TYPE"], "F F F F U I F F");
+  EXPECT_EQ(header["COUNT"], "1 1 1 1 1 1 1 1");
   EXPECT_EQ(std::stoul(header["WIDTH"]), 3u);       // azimuths
   EXPECT_EQ(std::stoul(header["HEIGHT"]), 2u * 2);  // rings x poses
   EXPECT_EQ(std::stoul(header["POINTS"]), 12u);
@@ -120,10 +122,11 @@ TEST(ScanFilesTest, PcdIsAnOrganisedCloudThatReadsBack) {
   // Row r = pose * rings + ring, column = azimuth: point r * WIDTH + column.
   for (std::size_t point = 0; point < 12; ++point) {
     const std::vector<std::string> f = split(text[at + point], ' ');
-    ASSERT_EQ(f.size(), 7u) << text[at + point];
+    ASSERT_EQ(f.size(), 8u) << text[at + point];
     const std::size_t row = point / 3, column = point % 3;
     const BeamReturn& beam = scan.at(row / 2, row % 2, column);
     EXPECT_EQ(std::stoul(f[4]), row % 2);  // ring
+    EXPECT_EQ(std::stof(f[7]), beam.time);
     if (std::isinf(beam.range)) {
       for (int k = 0; k < 4; ++k) EXPECT_TRUE(std::isnan(std::stof(f[k]))) << f[k];  // PCL's invalid point
       EXPECT_EQ(std::stoi(f[5]), -1);
@@ -141,7 +144,7 @@ TEST(ScanFilesTest, PcdIsAnOrganisedCloudThatReadsBack) {
 
 // DATA binary as PCL reads it (pcl::PCDReader, readBodyBinary): after the header's DATA line, the
 // points back to back, each its fields in FIELDS order at their SIZEs, no padding (point_step = 4 +
-// 4 + 4 + 4 + 2 + 4 + 4 = 26), in the machine's byte order.
+// 4 + 4 + 4 + 2 + 4 + 4 + 4 = 30), in the machine's byte order.
 TEST(ScanFilesTest, BinaryPcdHoldsEveryPointInPclsPackedLayout) {
   const ScratchDirectory dir;
   const ScanTable scan = sampleScan();
@@ -149,13 +152,13 @@ TEST(ScanFilesTest, BinaryPcdHoldsEveryPointInPclsPackedLayout) {
   const std::string cloud = readWholeFile(dir / "scan.pcd");
   const std::size_t data = cloud.find("DATA binary\n");
   ASSERT_NE(data, std::string::npos);
-  EXPECT_NE(cloud.find("\nSIZE 4 4 4 4 2 4 4\nTYPE F F F F U I F\n"), std::string::npos);
+  EXPECT_NE(cloud.find("\nSIZE 4 4 4 4 2 4 4 4\nTYPE F F F F U I F F\n"), std::string::npos);
   EXPECT_NE(cloud.find("\nWIDTH 3\nHEIGHT 4\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 12\n"), std::string::npos);
   const std::string points = cloud.substr(data + 12);
-  ASSERT_EQ(points.size(), 12u * 26);
+  ASSERT_EQ(points.size(), 12u * 30);
   for (std::size_t point = 0; point < 12; ++point) {
-    const char* at = points.data() + 26 * point;
-    float x, y, z, range, intensity;
+    const char* at = points.data() + 30 * point;
+    float x, y, z, range, intensity, time;
     std::uint16_t ring;
     std::int32_t object;
     std::memcpy(&x, at, 4);
@@ -165,9 +168,11 @@ TEST(ScanFilesTest, BinaryPcdHoldsEveryPointInPclsPackedLayout) {
     std::memcpy(&ring, at + 16, 2);
     std::memcpy(&object, at + 18, 4);
     std::memcpy(&intensity, at + 22, 4);
+    std::memcpy(&time, at + 26, 4);
     const std::size_t row = point / 3, column = point % 3;
     const BeamReturn& beam = scan.at(row / 2, row % 2, column);
     EXPECT_EQ(ring, row % 2);
+    EXPECT_EQ(time, beam.time);
     if (std::isinf(beam.range)) {
       EXPECT_TRUE(std::isnan(x) && std::isnan(y) && std::isnan(z) && std::isnan(range));
       EXPECT_EQ(object, -1);

@@ -19,7 +19,8 @@ const std::string kPlanar = R"({
   "horizontal": {"samples": 5, "min_angle": -1.0, "max_angle": 1.0},
   "range": {"min": 0.1, "max": 30, "resolution": 0.01},
   "noise": {"mean": 0.002, "stddev": 0.01, "seed": 18446744073709551615},
-  "intensity_noise": {"stddev": 0.05, "seed": 9}
+  "intensity_noise": {"stddev": 0.05, "seed": 9},
+  "rotation_rate": 10
 })";
 
 TEST(SensorFileTest, ReadsEveryKey) {
@@ -39,6 +40,10 @@ TEST(SensorFileTest, ReadsEveryKey) {
   EXPECT_EQ(s.noiseSeed, 18446744073709551615ull);  // the full 64-bit range, not through a double
   EXPECT_EQ(s.intensityNoiseStddev, 0.05);
   EXPECT_EQ(s.intensityNoiseSeed, 9u);
+  EXPECT_EQ(s.rotationRate, 10);
+  // Column k of 5 fires k / (5 x 10 Hz) after the sweep starts.
+  EXPECT_EQ(s.columnTime(0), 0);
+  EXPECT_EQ(s.columnTime(4), 4.0 / 50);
 }
 
 TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
@@ -53,6 +58,8 @@ TEST(SensorFileTest, DefaultsAreNoRotationNoNoiseNoResolution) {
   EXPECT_EQ(s.noiseMean, 0);
   EXPECT_EQ(s.noiseStddev, 0);
   EXPECT_EQ(s.intensityNoiseStddev, 0);
+  EXPECT_EQ(s.rotationRate, 0);
+  EXPECT_EQ(s.columnTime(0), 0);  // every beam at the pose's instant
 }
 
 TEST(SensorFileTest, VerticalFanAndElevationList) {
@@ -152,6 +159,12 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
                 "intensity_noise.stddev: 1.5 is out of range: a relative standard deviation lies in [0, 1]"},
       BadSensor{"IntensityNoiseUnknownKey", with(R"("stddev": 0.05, "seed": 9)", R"("stddev": 0.05, "mean": 9)"),
                 "intensity_noise.mean: unknown key; expected one of: stddev, seed"},
+      BadSensor{"NegativeRotationRate", with(R"("rotation_rate": 10)", R"("rotation_rate": -10)"),
+                "rotation_rate: -10 is out of range: a rotation rate lies in [0, 1e6] revolutions per second"},
+      BadSensor{"RotationRateTooHigh", with(R"("rotation_rate": 10)", R"("rotation_rate": 2e6)"),
+                "is out of range: a rotation rate lies in [0, 1e6]"},
+      BadSensor{"RotationRateNotANumber", with(R"("rotation_rate": 10)", R"("rotation_rate": "10 Hz")"),
+                "rotation_rate: expected a number, found string"},
       BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"),
                 "pose.position: expected an array of 3 numbers"}};
   for (const BadSensor& bad : cases) {
