@@ -21,7 +21,7 @@ namespace revolve::robot {
 
 class SensorMotion {
  public:
-  // Keeps a view of `trajectory`: it must outlive the motion.
+  // Keeps references to `mount` and `trajectory`: both must outlive the motion.
   SensorMotion(const io::SensorPose& mount, std::span<const io::RobotPose> trajectory);
 
   // Whether beams of one sweep are traced from different frames.
