@@ -53,7 +53,8 @@ TEST(LidarMotionTest, ASensorDrivingTowardAWallMeasuresFromWhereItIsWhenEachBeam
   const robot::Lidar lidar(built, s);
   std::vector<io::BeamReturn> beams(2 * std::size_t(samples));
   lidar.scan(
-      path, [&](std::uint64_t first, std::span<const io::BeamReturn> block) {
+      path,
+      [&](std::uint64_t first, std::span<const io::BeamReturn> block) {
         std::copy(block.begin(), block.end(), beams.begin() + std::ptrdiff_t(first));
       },
       0, nullptr, 0, 2);
@@ -112,7 +113,8 @@ TEST(LidarMotionTest, TheFrameMovesLinearlyTurnsTheShorterWayAndStopsAtTheLastPo
   std::vector<io::RobotPose> untimed = path;
   for (io::RobotPose& p : untimed) p.time = std::nan("");
   EXPECT_FALSE(robot::SensorMotion(mount, untimed).moving());
-  EXPECT_EQ(robot::SensorMotion(mount, untimed).at(0, 0.5).origin, robot::SensorMotion(mount, untimed).atPose(0).origin);
+  EXPECT_EQ(robot::SensorMotion(mount, untimed).at(0, 0.5).origin,
+            robot::SensorMotion(mount, untimed).atPose(0).origin);
   EXPECT_FALSE(robot::SensorMotion(mount, std::span(path.data(), 1)).moving());
 }
 
@@ -171,7 +173,8 @@ TEST(LidarMotionTest, AScanTracedInPartsIsTheWholeScanBitForBit) {
       SCOPED_TRACE("part from pose " + std::to_string(first) + ", threads " + std::to_string(threads));
       std::vector<io::BeamReturn> beams(count * lidar.beamsPerPose());
       lidar.scan(
-          part, [&](std::uint64_t at, std::span<const io::BeamReturn> block) {
+          part,
+          [&](std::uint64_t at, std::span<const io::BeamReturn> block) {
             std::copy(block.begin(), block.end(), beams.begin() + std::ptrdiff_t(at));
           },
           threads, nullptr, first, count);
