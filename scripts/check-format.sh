@@ -18,7 +18,18 @@ if [[ -z "$formatter" ]]; then
   echo "format check skipped: it needs clang-format 14 (Debian 12's), this machine has: $found"
   exit 0
 fi
-mapfile -t files < <(git ls-files '*.cpp' '*.h')
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  mapfile -t files < <(git ls-files '*.cpp' '*.h')
+else
+  # A copy without git (scripts/fresh-root.sh copies the tracked files into a root without git):
+  # every C++ file outside the ignored build and output folders (.gitignore).
+  mapfile -t files < <(find . \( -path './build*' -o -path './out' -o -path './.cache' \) -prune -o -type f \
+                         \( -name '*.cpp' -o -name '*.h' \) -print | sed 's|^\./||' | sort)
+fi
+if [[ ${#files[@]} -eq 0 ]]; then
+  echo "$0: found no C++ files to check" >&2
+  exit 1
+fi
 if [[ "${1:-}" == --fix ]]; then
   "$formatter" -i "${files[@]}"
   exit 0
