@@ -121,7 +121,7 @@ std::map<ObjectClass, ClassError> rangeErrors(const io::SceneDescription& scene,
     if (kind == ObjectClass::other) continue;
     ClassError& e = errors[kind];
     ++e.beams;
-    const io::BeamReturn& beam = scan.beams[i];
+    const io::BeamReturn& beam = scan.points[i];
     if (std::isinf(beam.range) || beam.object != reference[i]->object) {
       ++e.otherHit;
       continue;

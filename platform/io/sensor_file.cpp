@@ -4,6 +4,7 @@
 #include "io/text_files.h"
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 namespace revolve::io {
@@ -62,7 +63,65 @@ BeamFan readFan(const Reader& in, const Json& json, const std::string& path, int
   return fan;
 }
 
+// The footprint and return keys (divergence, subrays, returns, max_returns, return_separation).
+void readReturns(const Reader& in, const Json& root, SensorDescription& sensor) {
+  if (const Json* v = in.optional(root, "divergence")) {
+    sensor.divergence = in.numberIn(*v, "divergence", 0, kMaxDivergence,
+                                    "a beam's full divergence angle lies in [0, 0.1] radians (degrees?)");
+  }
+  if (const Json* v = in.optional(root, "subrays")) sensor.subrays = in.integerIn(*v, "subrays", 1, kMaxSubrays);
+  if (const Json* v = in.optional(root, "returns")) {
+    const std::string mode = in.string(*v, "returns");
+    bool known = false;
+    for (const ReturnMode m : {ReturnMode::first, ReturnMode::last, ReturnMode::strongest, ReturnMode::all}) {
+      if (mode == returnModeName(m)) {
+        sensor.returns = m;
+        known = true;
+      }
+    }
+    if (!known) {
+      in.fail("returns", json::quotedText(mode) +
+                             " is not a return mode; expected one of: \"first\", \"last\", \"strongest\", \"all\"");
+    }
+  }
+  if (const Json* v = in.optional(root, "max_returns")) {
+    if (sensor.returns != ReturnMode::all) {
+      in.fail("max_returns", std::string("applies to \"returns\": \"all\" only; returns is \"") +
+                                 returnModeName(sensor.returns) + "\", one return a beam");
+    }
+    sensor.maxReturns = in.integerIn(*v, "max_returns", 1, kMaxReturns);
+  }
+  if (const Json* v = in.optional(root, "return_separation")) {
+    sensor.returnSeparation = in.number(*v, "return_separation");
+    if (!(sensor.returnSeparation > 0))
+      in.fail("return_separation", numberText(sensor.returnSeparation) + " is not above 0: a distance between returns");
+  }
+}
+
 }  // namespace
+
+const char* returnModeName(ReturnMode mode) {
+  switch (mode) {
+    case ReturnMode::first:
+      return "first";
+    case ReturnMode::last:
+      return "last";
+    case ReturnMode::strongest:
+      return "strongest";
+    case ReturnMode::all:
+      return "all";
+  }
+  return "?";
+}
+
+double SensorDescription::sweepDuration() const {
+  double last = 0;
+  if (!pattern.empty()) {
+    for (const PatternBeam& beam : pattern) last = std::max(last, beam.time);
+    return last;
+  }
+  return columnTime(std::size_t(horizontal.samples - 1));
+}
 
 std::vector<double> fanAngles(const BeamFan& fan) {
   std::vector<double> angles(std::size_t(fan.samples));
@@ -77,36 +136,62 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
   const Reader in(file);
   const Json root = json::parse(text, in);
   in.object(root, "",
-            {"pose", "horizontal", "vertical", "elevations", "range", "noise", "intensity_noise", "rotation_rate"});
+            {"pose", "horizontal", "vertical", "elevations", "pattern", "range", "noise", "intensity_noise",
+             "rotation_rate", "divergence", "subrays", "returns", "max_returns", "return_separation"});
   SensorDescription sensor;
   sensor.file = file;
   sensor.pose = readPose(in, in.required(root, "", "pose"));
   const auto azimuth = [&](const Json& value, const std::string& path) { return angle(in, value, path); };
   const auto upward = [&](const Json& value, const std::string& path) { return elevation(in, value, path); };
-  sensor.horizontal = readFan(in, in.required(root, "", "horizontal"), "horizontal", kMaxHorizontalSamples, azimuth);
 
   const Json* vertical = in.optional(root, "vertical");
   const Json* elevations = in.optional(root, "elevations");
-  if (vertical != nullptr && elevations != nullptr) {
-    in.fail("elevations", "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both");
-  }
-  if (vertical != nullptr) {
-    sensor.elevations = fanAngles(readFan(in, *vertical, "vertical", kMaxChannels, upward));
-    sensor.planar = false;
-  } else if (elevations != nullptr) {
-    in.array(*elevations, "elevations");
-    if (elevations->empty()) in.fail("elevations", "the list is empty; a sensor needs at least one channel");
-    if (elevations->size() > std::size_t(kMaxChannels)) {
-      in.fail("elevations", std::to_string(elevations->size()) + " channels; at most " + std::to_string(kMaxChannels));
+  if (const Json* pattern = in.optional(root, "pattern")) {
+    for (const char* fan : {"horizontal", "vertical", "elevations"}) {
+      if (in.optional(root, fan) != nullptr)
+        in.fail(fan,
+                "give either \"pattern\" (a beam table) or the fans (horizontal, vertical or elevations), not both");
     }
-    for (std::size_t i = 0; i < elevations->size(); ++i)
-      sensor.elevations.push_back(upward((*elevations)[i], element("elevations", i)));
+    if (in.optional(root, "rotation_rate") != nullptr)
+      in.fail("rotation_rate",
+              "a pattern's beams carry their own firing times (its time column); rotation_rate is for fans");
+    const std::string name = in.string(*pattern, "pattern");
+    if (name.empty()) in.fail("pattern", "the path is empty");
+    // Relative to the sensor file, so that a sensor and its pattern travel together.
+    const std::filesystem::path path(name);
+    sensor.patternFile =
+        path.is_absolute() ? name : (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
+    try {
+      sensor.pattern = readBeamPattern(sensor.patternFile);
+    } catch (const InputError& error) {
+      in.fail("pattern", error.what());
+    }
+    sensor.elevations = {0.0};
     sensor.planar = false;
   } else {
-    sensor.elevations = {0.0};
+    sensor.horizontal = readFan(in, in.required(root, "", "horizontal"), "horizontal", kMaxHorizontalSamples, azimuth);
+    if (vertical != nullptr && elevations != nullptr) {
+      in.fail("elevations", "give either \"vertical\" (an even fan) or \"elevations\" (a list), not both");
+    } else if (vertical != nullptr) {
+      sensor.elevations = fanAngles(readFan(in, *vertical, "vertical", kMaxChannels, upward));
+      sensor.planar = false;
+    } else if (elevations != nullptr) {
+      in.array(*elevations, "elevations");
+      if (elevations->empty()) in.fail("elevations", "the list is empty; a sensor needs at least one channel");
+      if (elevations->size() > std::size_t(kMaxChannels)) {
+        in.fail("elevations",
+                std::to_string(elevations->size()) + " channels; at most " + std::to_string(kMaxChannels));
+      }
+      for (std::size_t i = 0; i < elevations->size(); ++i)
+        sensor.elevations.push_back(upward((*elevations)[i], element("elevations", i)));
+      sensor.planar = false;
+    } else {
+      sensor.elevations = {0.0};
+    }
   }
-  const long beams = long(sensor.horizontal.samples) * long(sensor.elevations.size());
-  if (beams > kMaxBeamsPerPose) {
+  const long beams = sensor.pattern.empty() ? long(sensor.horizontal.samples) * long(sensor.elevations.size())
+                                            : long(sensor.pattern.size());
+  if (sensor.pattern.empty() && beams > kMaxBeamsPerPose) {
     in.fail("horizontal.samples",
             std::to_string(sensor.horizontal.samples) + " samples x " + std::to_string(sensor.elevations.size()) +
                 " channels = " + std::to_string(beams) + " beams a pose; at most " + std::to_string(kMaxBeamsPerPose));
@@ -144,6 +229,13 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
     sensor.rotationRate = in.numberIn(*rate, "rotation_rate", 0, kMaxRotationRate,
                                       "a rotation rate lies in [0, 1e6] revolutions per second (0: every beam "
                                       "of a sweep at the pose's instant)");
+  }
+  readReturns(in, root, sensor);
+  // Every beam gives `layers` points, one a return (empty or not): the points of a pose.
+  if (beams * sensor.layers() > kMaxBeamsPerPose) {
+    in.fail("max_returns", std::to_string(beams) + " beams x " + std::to_string(sensor.layers()) +
+                               " returns = " + std::to_string(beams * sensor.layers()) + " points a pose; at most " +
+                               std::to_string(kMaxBeamsPerPose));
   }
   return sensor;
 }

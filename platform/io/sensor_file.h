@@ -8,11 +8,16 @@
 //    "range": {"min": r0, "max": r1, "resolution": q},
 //    "noise": {"mean": m, "stddev": s, "seed": k},
 //    "intensity_noise": {"stddev": s, "seed": k},
-//    "rotation_rate": hz}
+//    "rotation_rate": hz,
+//    "divergence": d, "subrays": n, "returns": "first" | "last" | "strongest" | "all",
+//    "max_returns": m, "return_separation": s,
+//    "pattern": "beams.csv"}   (instead of horizontal and vertical/elevations)
 //
 // The reader is strict: a missing or unknown key, a wrong type or a value breaking a rule is a
 // SensorError naming the file, the key path (`horizontal.samples`), the value and the rule.
 #pragma once
+
+#include "io/beam_pattern_file.h"
 
 #include <array>
 #include <cstdint>
@@ -42,6 +47,9 @@ struct BeamFan {
   double minAngle = 0, maxAngle = 0;
 };
 
+// Which of a beam's returns a scan reports (robot/beam_returns.h).
+enum class ReturnMode { first, last, strongest, all };
+
 struct SensorDescription {
   std::string file;  // as given to the reader
   SensorPose pose;
@@ -61,19 +69,55 @@ struct SensorDescription {
   // Revolutions per second of a spinning sensor; 0: every beam of a sweep fires at the pose's
   // instant. With a rate, column k of a sweep fires k / (samples x rate) seconds after its start.
   double rotationRate = 0;
+  // A beam's footprint: a cone of full angle `divergence` (radians) sampled by `subrays` rays
+  // (robot/beam_footprint.h); 0 and 1: the beam is its axis.
+  double divergence = 0;
+  int subrays = 1;
+  ReturnMode returns = ReturnMode::first;
+  // Returns reported per beam with ReturnMode::all (the scan's layers, io::ScanLayout); else 1.
+  int maxReturns = 2;
+  // Sub-ray hits nearer each other than this (or than the range resolution) are one return.
+  double returnSeparation = kDefaultReturnSeparation;
+  // The beams of a pattern file, in its order (`pattern`); empty: the fans above. With a pattern
+  // the scan is unorganised: one ring whose columns are the pattern's beams.
+  std::vector<PatternBeam> pattern;
+  std::string patternFile;  // as resolved against the sensor file's folder
 
-  // Seconds from the sweep's start to the firing of the beams of `column`.
+  static constexpr double kDefaultReturnSeparation = 0.1;
+
+  // Seconds from the sweep's start to the firing of the beams of `column`: the one place a beam's
+  // time offset comes from.
   double columnTime(std::size_t column) const {
+    if (!pattern.empty()) return pattern[column].time;
     return rotationRate > 0 ? double(column) / (double(horizontal.samples) * rotationRate) : 0.0;
   }
+  // Whether the beams of a sweep fire at different times.
+  bool fansOutInTime() const {
+    if (!pattern.empty()) {
+      for (const PatternBeam& beam : pattern)
+        if (beam.time != 0) return true;
+      return false;
+    }
+    return rotationRate > 0;
+  }
+  // Seconds from a sweep's start to its last beam's firing.
+  double sweepDuration() const;
+  // Returns reported per beam: the layers of the scan.
+  int layers() const { return returns == ReturnMode::all ? maxReturns : 1; }
 };
+
+// The name of a return mode as the sensor file writes it.
+const char* returnModeName(ReturnMode mode);
 
 inline constexpr double kMaxRotationRate = 1e6;
 
 // Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).
 inline constexpr int kMaxHorizontalSamples = 1 << 20;
 inline constexpr int kMaxChannels = 4096;
-inline constexpr long kMaxBeamsPerPose = 1L << 24;
+inline constexpr long kMaxBeamsPerPose = 1L << 24;  // points: beams x layers
+inline constexpr double kMaxDivergence = 0.1;
+inline constexpr int kMaxSubrays = 256;
+inline constexpr int kMaxReturns = 255;  // the PCD's `return` field is one byte
 
 // The angles of a fan's beams (see BeamFan).
 std::vector<double> fanAngles(const BeamFan& fan);

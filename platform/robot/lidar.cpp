@@ -1,7 +1,9 @@
 #include "robot/lidar.h"
 #include "threads/thread_arenas.h"
 
+#include "random/counter_hash.h"
 #include "robot/beam_noise.h"
+#include "robot/beam_returns.h"
 #include "robot/sensor_motion.h"
 #include "robot/sensor_rig.h"
 
@@ -19,89 +21,72 @@
 
 namespace revolve::robot {
 
-Lidar::Lidar(const scene::EmbreeScene& scene, const io::SensorDescription& sensor) : scene_(scene), sensor_(sensor) {
-  for (const double a : io::fanAngles(sensor.horizontal)) azimuths_.push_back({a, std::cos(a), std::sin(a)});
-  for (const double e : sensor.elevations) elevations_.push_back({e, std::cos(e), std::sin(e)});
+Lidar::Lidar(const scene::EmbreeScene& scene, const io::SensorDescription& sensor)
+    : scene_(scene), sensor_(sensor), layout_(io::scanLayout(sensor, 1)) {
+  for (const double a : layout_.azimuths) azimuths_.push_back({std::cos(a), std::sin(a)});
+  for (const double e : layout_.elevations) elevations_.push_back({std::cos(e), std::sin(e)});
+  footprint_ = footprintOffsets(sensor.divergence, sensor.subrays);
 }
 
 io::ScanLayout Lidar::layout(std::size_t poses) const {
-  io::ScanLayout layout;
-  for (const Angle& a : azimuths_) layout.azimuths.push_back(a.radians);
-  for (const Angle& e : elevations_) layout.elevations.push_back(e.radians);
+  io::ScanLayout layout = layout_;
   layout.poses = poses;
   return layout;
 }
 
+namespace {
+
+// The noise stream of a beam's `echo`-th return (in range order among all its echoes): the
+// sensor's seed for the first, so that a beam of one return has the noise it always had; a seed
+// of its own for each further one.
+std::uint64_t echoSeed(std::uint64_t seed, std::size_t echo) noexcept {
+  return echo == 0 ? seed : app::mix64(seed ^ app::mix64(0x9e3779b97f4a7c15ULL + echo));
+}
+
+}  // namespace
+
 void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads, double* tracingSeconds,
                  std::uint64_t firstPose, std::size_t sweeps) const {
   sweeps = std::min(sweeps, poses.size());
-  const std::size_t columns = azimuths_.size(), rings = elevations_.size(), perPose = columns * rings;
+  const std::size_t columns = layout_.columns(), rings = layout_.rings(), perPose = columns * rings;
+  const std::size_t layers = layout_.layers;
   const std::uint64_t total = std::uint64_t(sweeps) * perPose;
   const float noReturn = std::numeric_limits<float>::infinity();
   const SensorMotion motion(sensor_.pose, poses);
   // A beam's own frame only where the sensor moves during a sweep.
-  const bool moving = motion.moving() && sensor_.rotationRate > 0;
-
-  // Beam `index` (its number in the scan): its ray from the frame of its pose, and its direction
-  // in double precision (where the return is placed).
-  const auto beamRay = [&](std::uint64_t index, const SensorFrame& frame, Vec3d& direction) noexcept {
-    const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
-    const Angle& a = azimuths_[column];
-    const Angle& e = elevations_[ring];
-    direction = frame.rotate({e.cosine * a.cosine, e.cosine * a.sine, e.sine});
-    Ray ray;
-    ray.origin = {float(frame.origin[0]), float(frame.origin[1]), float(frame.origin[2])};
-    ray.direction = {float(direction[0]), float(direction[1]), float(direction[2])};
-    return ray;
-  };
-  // The beam's return from its nearest hit.
-  const auto beamReturn = [&](std::uint64_t index, const SensorFrame& frame, const Ray& ray, const Vec3d& direction,
-                              const std::optional<scene::RangeHit>& hit) noexcept -> io::BeamReturn {
-    const std::uint64_t pose = index / perPose;
-    const std::size_t ring = std::size_t(index % perPose) / columns, column = std::size_t(index % columns);
-    const float time = float(sensor_.columnTime(column));
-    if (!hit) return {noReturn, 0, 0, 0, -1, 0, time};
-    // t is in units of the float direction, whose length differs from 1 by its rounding.
-    const double length =
-        std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
-                  double(ray.direction.z) * ray.direction.z);
-    double range = double(hit->t) * length + sensor_.noiseMean;
-    if (sensor_.noiseStddev > 0)
-      range += sensor_.noiseStddev * standardNormal(sensor_.noiseSeed, firstPose + pose, ring, column);
-    if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
-    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax))
-      return {noReturn, 0, 0, 0, -1, 0, time};  // ROS: not a return
-    // Intensity: a Lambertian surface of reflectivity r returns r |cos theta| of the beam's light
-    // (theta between the beam and the surface's normal: the exact surface's, a facet's for a mesh),
-    // received over a solid angle falling as 1 / range^2. The traced range, not the noisy one: the
-    // range noise models the range measurement only.
-    const double traced = double(hit->t) * length;
-    const double cosine = std::abs(double(hit->normal.x) * direction[0] + double(hit->normal.y) * direction[1] +
-                                   double(hit->normal.z) * direction[2]);
-    double intensity = double(hit->reflectivity) * cosine / (traced * traced);
-    if (sensor_.intensityNoiseStddev > 0) {
-      const double z = standardNormal(sensor_.intensityNoiseSeed, firstPose + pose, ring, column);
-      intensity = std::max(0.0, intensity * (1 + sensor_.intensityNoiseStddev * z));
-    }
-    // The return where the measured range puts it along the beam, from the double-precision origin.
-    return {float(range),
-            float(frame.origin[0] + range * direction[0]),
-            float(frame.origin[1] + range * direction[1]),
-            float(frame.origin[2] + range * direction[2]),
-            std::int32_t(hit->object),
-            float(intensity),
-            time};
-  };
-  // Beams [first, first + count) of one ring of one pose, count <= kPacketRays, traced as one packet,
-  // from the pose's frame or, while the sensor moves, each from its own: `columnFrames` (the
-  // frames of their columns, in order) or, without it, made here.
+  const bool moving = motion.moving() && sensor_.fansOutInTime();
+  const int subrays = sensor_.subrays;
+  // Returns nearer each other than the sensor can tell apart are one.
+  const double separation = std::max(sensor_.returnSeparation, sensor_.resolution);
+  // Beams traced by one call of traceBeams: a packet's worth of sub-rays at least, no more than
+  // kMaxRays of them (its stack arrays).
   constexpr std::size_t kPacket = scene::EmbreeScene::kPacketRays;
-  const auto tracePacket = [&](std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
-                               const SensorFrame* columnFrames, io::BeamReturn* out) noexcept {
-    std::array<Ray, kPacket> rays;
-    std::array<Vec3d, kPacket> directions;
-    std::array<std::optional<scene::RangeHit>, kPacket> hits;
+  constexpr std::size_t kMaxRays = std::size_t(io::kMaxSubrays);
+  static_assert(kMaxRays >= kPacket);
+  const std::size_t beamsPerCall = std::clamp<std::size_t>(kMaxRays / std::size_t(subrays), 1, kPacket);
+
+  // The number of point (beam, layer) in the scan (io::ScanLayout).
+  const auto pointOf = [&](std::uint64_t beam, std::size_t layer) noexcept {
+    return (beam / perPose * layers + layer) * perPose + beam % perPose;
+  };
+  const auto axesOf = [&](std::uint64_t beam) noexcept {
+    const std::size_t ring = std::size_t(beam % perPose) / columns, column = std::size_t(beam % columns);
+    const Angle& a = azimuths_[column];
+    const Angle& e = elevations_[layout_.pattern ? column : ring];
+    return BeamAxes::at(a.cosine, a.sine, e.cosine, e.sine);
+  };
+
+  // Beams [first, first + count) of one ring of one pose, count <= beamsPerCall, their sub-rays
+  // traced in packets, from the pose's frame or, while the sensor moves, each from its own:
+  // `columnFrames` (the frames of their columns, in order) or, without it, made here. Their
+  // points go to out[pointOf(beam, layer) - outFirst].
+  const auto traceBeams = [&](std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
+                              const SensorFrame* columnFrames, io::BeamReturn* out, std::uint64_t outFirst) noexcept {
+    std::array<Ray, kMaxRays> rays;
+    std::array<Vec3d, kMaxRays> directions;
+    std::array<std::optional<scene::RangeHit>, kMaxRays> hits;
     std::array<SensorFrame, kPacket> ownFrames;
+    std::array<Vec3d, kPacket> axes;
     if (moving && columnFrames == nullptr) {
       const std::size_t pose = std::size_t(first / perPose);
       for (std::size_t k = 0; k < count; ++k)
@@ -109,15 +94,98 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
       columnFrames = ownFrames.data();
     }
     const auto frame = [&](std::size_t k) -> const SensorFrame& { return moving ? columnFrames[k] : poseFrame; };
-    for (std::size_t k = 0; k < count; ++k) rays[k] = beamRay(first + k, frame(k), directions[k]);
-    scene_.nearest(std::span<const Ray>(rays.data(), count), std::span(hits.data(), count));
-    for (std::size_t k = 0; k < count; ++k) out[k] = beamReturn(first + k, frame(k), rays[k], directions[k], hits[k]);
+    const std::size_t rayCount = count * std::size_t(subrays);
+    for (std::size_t k = 0; k < count; ++k) {
+      const SensorFrame& f = frame(k);
+      const BeamAxes beam = axesOf(first + k);
+      axes[k] = f.rotate(beam.axis);
+      for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
+        const std::size_t q = k * std::size_t(subrays) + j;
+        directions[q] = subrays == 1 ? axes[k] : f.rotate(beam.direction(footprint_[j]));
+        rays[q].origin = {float(f.origin[0]), float(f.origin[1]), float(f.origin[2])};
+        rays[q].direction = {float(directions[q][0]), float(directions[q][1]), float(directions[q][2])};
+      }
+    }
+    for (std::size_t q = 0; q < rayCount; q += kPacket) {
+      const std::size_t n = std::min(kPacket, rayCount - q);
+      scene_.nearest(std::span<const Ray>(rays.data() + q, n), std::span(hits.data() + q, n));
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::uint64_t beam = first + k;
+      const std::uint64_t pose = beam / perPose;
+      const std::size_t ring = std::size_t(beam % perPose) / columns, column = std::size_t(beam % columns);
+      const float time = float(sensor_.columnTime(column));
+      // The sub-rays' hits, as ranges along unit directions and intensities.
+      std::array<Echo, kMaxRays> echoes, groups;
+      std::size_t hitCount = 0;
+      for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
+        const std::size_t q = k * std::size_t(subrays) + j;
+        const std::optional<scene::RangeHit>& hit = hits[q];
+        if (!hit) continue;
+        // t is in units of the float direction, whose length differs from 1 by its rounding.
+        const Ray& ray = rays[q];
+        const double length =
+            std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
+                      double(ray.direction.z) * ray.direction.z);
+        const double traced = double(hit->t) * length;
+        // Intensity: a Lambertian surface of reflectivity r returns r |cos theta| of the light
+        // (theta between the ray and the surface's normal: the exact surface's, a facet's for a
+        // mesh), received over a solid angle falling as 1 / range^2; the traced range, not the
+        // noisy one: the range noise models the range measurement only.
+        const Vec3d& d = directions[q];
+        const double cosine =
+            std::abs(double(hit->normal.x) * d[0] + double(hit->normal.y) * d[1] + double(hit->normal.z) * d[2]);
+        echoes[hitCount++] = {traced, double(hit->reflectivity) * cosine / (traced * traced),
+                              std::int32_t(hit->object)};
+      }
+      const std::size_t groupCount =
+          groupEchoes(std::span(echoes.data(), hitCount), separation, subrays, std::span(groups.data(), hitCount));
+      // Each return measured: noise, rounding, the range gate (ROS: outside it, not a return).
+      std::array<io::BeamReturn, kMaxRays> measured;
+      std::size_t returned = 0;
+      for (std::size_t g = 0; g < groupCount; ++g) {
+        double range = groups[g].range + sensor_.noiseMean;
+        if (sensor_.noiseStddev > 0) {
+          range += sensor_.noiseStddev * standardNormal(echoSeed(sensor_.noiseSeed, g), firstPose + pose, ring, column);
+        }
+        if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
+        if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) continue;
+        double intensity = groups[g].intensity;
+        if (sensor_.intensityNoiseStddev > 0) {
+          const double z = standardNormal(echoSeed(sensor_.intensityNoiseSeed, g), firstPose + pose, ring, column);
+          intensity = std::max(0.0, intensity * (1 + sensor_.intensityNoiseStddev * z));
+        }
+        // The return where the measured range puts it along the beam's axis, from the
+        // double-precision origin.
+        const SensorFrame& f = frame(k);
+        measured[returned++] = {float(range),
+                                float(f.origin[0] + range * axes[k][0]),
+                                float(f.origin[1] + range * axes[k][1]),
+                                float(f.origin[2] + range * axes[k][2]),
+                                groups[g].object,
+                                float(intensity),
+                                time};
+      }
+      // The reported returns, nearest first.
+      std::size_t from = 0, reported = std::min(returned, layers);
+      if (returned > 0 && sensor_.returns == io::ReturnMode::last) from = returned - 1;
+      if (returned > 0 && sensor_.returns == io::ReturnMode::strongest) {
+        for (std::size_t g = 1; g < returned; ++g)
+          if (measured[g].intensity > measured[from].intensity) from = g;
+      }
+      for (std::size_t layer = 0; layer < layers; ++layer) {
+        out[pointOf(beam, layer) - outFirst] =
+            layer < reported ? measured[from + layer] : io::BeamReturn{noReturn, 0, 0, 0, -1, 0, time};
+      }
+    }
   };
-  // Beams [first, first + count) into `out`, on the arena's threads.
+  // Beams [first, first + count) into `out` (their points, from point pointOf(first, 0)), on the
+  // arena's threads.
   double tracing = 0;
   const auto traceBlock = [&](std::uint64_t first, std::size_t count, std::vector<io::BeamReturn>& out) {
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t firstPose = first / perPose, lastPose = (first + count - 1) / perPose;
+    const std::uint64_t outFirst = pointOf(first, 0);
     std::vector<SensorFrame> frames;
     for (std::uint64_t p = firstPose; p <= lastPose; ++p) frames.push_back(motion.atPose(std::size_t(p)));
     // A moving sensor fires every ring of a column from one frame: made once per (pose, column)
@@ -130,38 +198,44 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
         columnFrames[i] = motion.at(std::size_t(firstPose + i / columns), sensor_.columnTime(i % columns));
       });
     }
+    const std::size_t grain = std::max<std::size_t>(1, 256 / std::size_t(subrays));
     tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, count, 256), [&](const tbb::blocked_range<std::size_t>& range) {
-          // Neighbouring beams of a ring in packets, a packet ending where its ring does.
+        tbb::blocked_range<std::size_t>(0, count, grain), [&](const tbb::blocked_range<std::size_t>& range) {
+          // Neighbouring beams of a ring together, a call ending where its ring does.
           for (std::size_t i = range.begin(); i != range.end();) {
             const std::uint64_t beam = first + i;
             const std::size_t ringLeft = columns - std::size_t(beam % columns);
-            const std::size_t count = std::min({kPacket, ringLeft, range.end() - i});
+            const std::size_t n = std::min({beamsPerCall, ringLeft, range.end() - i});
             const std::uint64_t pose = beam / perPose;
             const SensorFrame* own = columnFrames.empty()
                                          ? nullptr
                                          : &columnFrames[std::size_t((pose - firstPose) * columns + beam % columns)];
-            tracePacket(beam, count, frames[pose - firstPose], own, out.data() + i);
-            i += count;
+            traceBeams(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
+            i += n;
           }
         });
     tracing += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();  // one block at a time
   };
   if (total == 0) return;
 
+  // Beams a block: any number for one layer; whole poses for several, so that a block's points
+  // (a pose's layers one after the other) are consecutive.
+  const std::uint64_t blockBeams =
+      layers == 1 ? kBlockBeams : std::max<std::uint64_t>(1, kBlockBeams / perPose) * perPose;
   tbb::task_arena& arena = app::threadArena(threads > 0 ? threads : 0);
   arena.execute([&] {
-    std::vector<io::BeamReturn> ready(std::min<std::uint64_t>(kBlockBeams, total)), next(ready.size());
+    const std::size_t firstCount = std::size_t(std::min<std::uint64_t>(blockBeams, total));
+    std::vector<io::BeamReturn> ready(firstCount * layers), next(ready.size());
     std::uint64_t readyFirst = 0;
-    std::size_t readyCount = ready.size();
+    std::size_t readyCount = firstCount;
     traceBlock(readyFirst, readyCount, ready);
     for (;;) {
       const std::uint64_t nextFirst = readyFirst + readyCount;
-      const std::size_t nextCount = std::size_t(std::min<std::uint64_t>(kBlockBeams, total - nextFirst));
+      const std::size_t nextCount = std::size_t(std::min<std::uint64_t>(blockBeams, total - nextFirst));
       tbb::task_group tracing;
       if (nextCount > 0) tracing.run([&] { traceBlock(nextFirst, nextCount, next); });
       try {
-        sink(readyFirst, std::span<const io::BeamReturn>(ready.data(), readyCount));
+        sink(pointOf(readyFirst, 0), std::span<const io::BeamReturn>(ready.data(), readyCount * layers));
       } catch (...) {
         tracing.wait();
         throw;
@@ -179,11 +253,11 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
 io::ScanTable Lidar::scan(std::span<const io::RobotPose> poses, int threads) const {
   io::ScanTable table;
   static_cast<io::ScanLayout&>(table) = layout(poses.size());
-  table.beams.resize(table.beamCount());
+  table.points.resize(table.pointCount());
   scan(
       poses,
       [&](std::uint64_t first, std::span<const io::BeamReturn> beams) {
-        std::copy(beams.begin(), beams.end(), table.beams.begin() + first);
+        std::copy(beams.begin(), beams.end(), table.points.begin() + first);
       },
       threads);
   return table;

@@ -232,8 +232,12 @@ ScanPlot::ScanPlot(const io::SceneDescription& scene, const io::SensorDescriptio
   std::ostringstream title;
   title << scene.file << ": ";
   if (ring) title << "ring " << *ring << " of ";
-  title << layout.rings() << " x " << layout.azimuths.size() << " beams from " << layout.poses
-        << (layout.poses == 1 ? " pose" : " poses") << ", sensor at z = " << sensorHeight << " m";
+  if (layout.pattern)
+    title << "a pattern of " << layout.columns();
+  else
+    title << layout.rings() << " x " << layout.columns();
+  title << " beams from " << layout.poses << (layout.poses == 1 ? " pose" : " poses")
+        << ", sensor at z = " << sensorHeight << " m";
   header["title"] = title.str();
   std::string text = header.dump();
   text.pop_back();  // the closing brace: the poses follow, as they are traced
@@ -246,12 +250,11 @@ ScanPlot::~ScanPlot() = default;
 
 void ScanPlot::add(std::uint64_t first, std::span<const io::BeamReturn> beams) {
   Data& d = *data_;
-  const std::uint64_t perPose = d.layout.beamsPerPose();
   for (std::size_t i = 0; i < beams.size(); ++i) {
-    const std::uint64_t pose = (first + i) / perPose;
-    while (d.pose < std::int64_t(pose)) d.startPose(std::size_t(d.pose + 1));
+    const io::ScanLayout::Place at = d.layout.place(first + i);
+    while (d.pose < std::int64_t(at.pose)) d.startPose(std::size_t(d.pose + 1));
     const io::BeamReturn& b = beams[i];
-    if (std::isinf(b.range) || (d.ring && (first + i) % perPose / d.layout.azimuths.size() != *d.ring)) continue;
+    if (std::isinf(b.range) || (d.ring && at.ring != *d.ring)) continue;
     std::fprintf(d.out, d.firstReturn ? "[%.9g, %.9g, %.9g]" : ", [%.9g, %.9g, %.9g]", b.x, b.y, b.intensity);
     d.firstReturn = false;
   }

@@ -207,38 +207,50 @@ io::SensorDescription sensorOf(py::handle sensor) {
   return io::readSensor(pathArgument(sensor, "sensor"));
 }
 
-// A scan's returns in numpy arrays shaped (poses, rings, azimuths), written block by block.
+// A scan's points in numpy arrays shaped (poses, rings, azimuths), or (poses, returns, rings,
+// azimuths) for a sensor reporting several returns a beam (io::ScanLayout's point order), written
+// block by block.
 struct ScanArrays {
   py::array_t<float> ranges, points, intensity, time;
   py::array_t<std::int32_t> ids;
   py::array_t<std::uint16_t> rings;
+  py::array_t<std::uint8_t> returns;
 };
 
-ScanArrays newScanArrays(std::size_t poses, std::size_t rings, std::size_t azimuths) {
-  const std::vector<py::ssize_t> shape{py::ssize_t(poses), py::ssize_t(rings), py::ssize_t(azimuths)};
-  return {newArray<float>(shape), newArray<float>(shape, 3),     newArray<float>(shape),
-          newArray<float>(shape), newArray<std::int32_t>(shape), newArray<std::uint16_t>(shape)};
+std::vector<py::ssize_t> scanShape(const io::ScanLayout& layout) {
+  std::vector<py::ssize_t> shape{py::ssize_t(layout.poses)};
+  if (layout.layers > 1) shape.push_back(py::ssize_t(layout.layers));
+  shape.push_back(py::ssize_t(layout.rings()));
+  shape.push_back(py::ssize_t(layout.columns()));
+  return shape;
+}
+
+ScanArrays newScanArrays(const io::ScanLayout& layout) {
+  const std::vector<py::ssize_t> shape = scanShape(layout);
+  return {newArray<float>(shape),       newArray<float>(shape, 3),     newArray<float>(shape),
+          newArray<float>(shape),       newArray<std::int32_t>(shape), newArray<std::uint16_t>(shape),
+          newArray<std::uint8_t>(shape)};
 }
 
 py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObject, py::handle threadsObject,
               py::handle firstPoseObject, py::handle sweepsObject) {
   const int threads = threadsArgument(threadsObject, "threads", false);
-  // A scan holds fewer than 2^31 beams: no pose number beyond that has a beam of its own.
-  const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, io::kMaxScanBeams);
+  // A scan holds fewer than 2^31 points: no pose number beyond that has a beam of its own.
+  const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, io::kMaxScanPoints);
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
   const std::size_t sweeps =
       sweepsObject.is_none() ? poses.size() : std::size_t(unsignedArgument(sweepsObject, "sweeps", 0, poses.size()));
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
   const robot::Lidar lidar(*scene->built, self.sensor);
   const io::ScanLayout layout = lidar.layout(sweeps);
-  const std::size_t rings = layout.rings(), azimuths = layout.azimuths.size();
-  ScanArrays a = newScanArrays(sweeps, rings, azimuths);
+  ScanArrays a = newScanArrays(layout);
   float* ranges = a.ranges.mutable_data();
   float* intensity = a.intensity.mutable_data();
   float* times = a.time.mutable_data();
   float* points = a.points.mutable_data();
   std::int32_t* ids = a.ids.mutable_data();
   std::uint16_t* ringOf = a.rings.mutable_data();
+  std::uint8_t* returnOf = a.returns.mutable_data();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   {
     py::gil_scoped_release release;
@@ -256,7 +268,9 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
             ids[b] = beam.object;
             intensity[b] = hit ? beam.intensity : nan;
             times[b] = beam.time;
-            ringOf[b] = std::uint16_t(b / azimuths % rings);
+            const io::ScanLayout::Place at = layout.place(b);
+            ringOf[b] = std::uint16_t(at.ring);
+            returnOf[b] = std::uint8_t(at.layer);
           }
         },
         threads, nullptr, firstPose, sweeps);
@@ -268,6 +282,7 @@ py::dict scan(const PySensor& self, py::handle sceneObject, py::handle posesObje
   result["ids"] = a.ids;
   result["intensity"] = a.intensity;
   result["time"] = a.time;
+  result["return"] = a.returns;
   return result;
 }
 
@@ -293,13 +308,11 @@ struct ScanFile {
     if (data == "binary" && format != io::ScanFormat::pcd) {
       throw py::value_error(path + ": data=\"binary\" applies to .pcd outputs, and this one is a CSV table");
     }
-    for (const double a : io::fanAngles(sensor.sensor.horizontal)) layout.azimuths.push_back(a);
-    layout.elevations = sensor.sensor.elevations;
-    layout.poses = poses;
-    // Compared by division: poses x beams would wrap a 64-bit count (2^54 poses of 1,024 beams is 0).
-    if (poses == 0 || poses > io::kMaxScanBeams / layout.beamsPerPose()) {
-      throw py::value_error("poses = " + std::to_string(poses) + " x " + std::to_string(layout.beamsPerPose()) +
-                            " beams: a scan holds 1 to 2^31 - 1 beams (PCD's point count, as PCL indexes it)");
+    layout = io::scanLayout(sensor.sensor, std::size_t(poses));
+    // Compared by division: poses x points would wrap a 64-bit count (2^54 poses of 1,024 is 0).
+    if (poses == 0 || poses > io::kMaxScanPoints / layout.pointsPerPose()) {
+      throw py::value_error("poses = " + std::to_string(poses) + " x " + std::to_string(layout.pointsPerPose()) +
+                            " points: a scan holds 1 to 2^31 - 1 points (PCD's point count, as PCL indexes it)");
     }
     for (const std::string& input : inputs) outputs.addInput("an input", input);
     outputs.add("", path);
@@ -309,9 +322,10 @@ struct ScanFile {
   void write(py::handle firstPoseObject, py::handle scanObject) {
     if (committed) throw py::value_error(path + ": already committed");
     const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, layout.poses);
-    const std::string expected = "a scan dict of Lidar.scan for this sensor (ranges (P, " +
-                                 std::to_string(layout.rings()) + ", " + std::to_string(layout.azimuths.size()) +
-                                 "), points, ids, intensity, time)";
+    std::string shape;
+    for (const py::ssize_t n : scanShape(layout)) shape += ", " + std::to_string(n);
+    const std::string expected = "a scan dict of Lidar.scan for this sensor (ranges (P" +
+                                 shape.substr(shape.find(',', 1)) + "), points, ids, intensity, time)";
     if (!py::isinstance<py::dict>(scanObject)) {
       throw py::type_error("scan: a " + std::string(py::str(py::type::handle_of(scanObject).attr("__name__"))) +
                            "; expected " + expected);
@@ -337,10 +351,12 @@ struct ScanFile {
     const py::array_t<float> ranges = converted(float{}, "ranges"), points = converted(float{}, "points"),
                              intensity = converted(float{}, "intensity"), times = converted(float{}, "time");
     const py::array_t<std::int32_t> ids = converted(std::int32_t{}, "ids");
-    const std::size_t perPose = layout.beamsPerPose();
-    if (ranges.ndim() != 3 || std::size_t(ranges.shape(1) * ranges.shape(2)) != perPose ||
-        points.size() != 3 * ranges.size() || ids.size() != ranges.size() || intensity.size() != ranges.size() ||
-        times.size() != ranges.size()) {
+    const std::size_t perPose = layout.pointsPerPose();
+    const std::vector<py::ssize_t> want = scanShape(layout);
+    bool shaped = ranges.ndim() == py::ssize_t(want.size());
+    for (std::size_t d = 1; shaped && d < want.size(); ++d) shaped = ranges.shape(py::ssize_t(d)) == want[d];
+    if (!shaped || points.size() != 3 * ranges.size() || ids.size() != ranges.size() ||
+        intensity.size() != ranges.size() || times.size() != ranges.size()) {
       throw py::value_error(path + ": " + expected + " is expected");
     }
     const std::uint64_t poses = std::uint64_t(ranges.shape(0));
@@ -443,9 +459,12 @@ LaserScan: no return is inf, never clamped; seeded per-beam noise) and returns a
 shaped (poses, rings, azimuths): ranges (float32, inf for no return), points (float32, (..., 3),
 world frame, nan for no return), intensity (float32, reflectivity |cos| / range^2 in 1/m^2, nan
 for no return), time (float32, seconds from the sweep's start to the beam's firing: 0 without a
-rotation_rate), rings (uint16) and ids (int32: the scene's object index, quads after the objects,
--1 for no return), bit for bit revolve-lidar's. With a rotation_rate and poses that carry times,
-each beam is traced from where the moving sensor is when it fires (docs/robot.md).)")
+rotation_rate), rings (uint16), return (uint8: the return's index, nearest first) and ids (int32:
+the scene's object index, quads after the objects, -1 for no return), bit for bit revolve-lidar's.
+A sensor with returns "all" gives (poses, max_returns, rings, azimuths): one layer per return, nan
+where a beam has fewer; a beam pattern one ring of all its beams. With a rotation_rate (or pattern
+times) and poses that carry times, each beam is traced from where the moving sensor is when it
+fires (docs/robot.md).)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
            py::arg("first_pose") = py::int_(0), py::arg("sweeps") = py::none(),
@@ -454,24 +473,29 @@ each beam is traced from where the moving sensor is when it fires (docs/robot.md
            "(its noise is that pose's); sweeps: trace the sweeps of poses[:sweeps] only (default all), the poses after "
            "them the rest of the path a moving sensor follows (a part's poses reach past its last sweep's end: "
            "shard_poses).")
-      .def_property_readonly("azimuths",
-                             [](const PySensor& s) {
-                               const std::vector<double> a = io::fanAngles(s.sensor.horizontal);
-                               return py::array_t<double>(py::ssize_t(a.size()), a.data());
-                             })
-      .def_property_readonly("elevations",
-                             [](const PySensor& s) {
-                               return py::array_t<double>(py::ssize_t(s.sensor.elevations.size()),
-                                                          s.sensor.elevations.data());
-                             })
       .def_property_readonly(
-          "beams_per_pose",
-          [](const PySensor& s) { return std::size_t(s.sensor.horizontal.samples) * s.sensor.elevations.size(); })
+          "azimuths",
+          [](const PySensor& s) {
+            const io::ScanLayout layout = io::scanLayout(s.sensor, 1);
+            return py::array_t<double>(py::ssize_t(layout.azimuths.size()), layout.azimuths.data());
+          },
+          "one per column (a beam pattern's: one per beam)")
+      .def_property_readonly(
+          "elevations",
+          [](const PySensor& s) {
+            const io::ScanLayout layout = io::scanLayout(s.sensor, 1);
+            return py::array_t<double>(py::ssize_t(layout.elevations.size()), layout.elevations.data());
+          },
+          "one per ring (a beam pattern's: one per beam)")
+      .def_property_readonly("beams_per_pose",
+                             [](const PySensor& s) { return io::scanLayout(s.sensor, 1).beamsPerPose(); })
+      .def_property_readonly(
+          "returns_per_beam", [](const PySensor& s) { return s.sensor.layers(); },
+          "points a beam gives: max_returns with returns \"all\" (the scan's second axis), else 1")
       .def_property_readonly("rotation_rate", [](const PySensor& s) { return s.sensor.rotationRate; })
       .def_property_readonly(
-          "sweep_duration",
-          [](const PySensor& s) { return s.sensor.columnTime(std::size_t(s.sensor.horizontal.samples - 1)); },
-          "seconds from a sweep's first beam to its last (0 without a rotation_rate)");
+          "sweep_duration", [](const PySensor& s) { return s.sensor.sweepDuration(); },
+          "seconds from a sweep's first beam to its last (0 without a rotation_rate or pattern times)");
 
   py::class_<ScanFile>(m, "ScanFile",
                        R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.

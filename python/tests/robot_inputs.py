@@ -66,15 +66,15 @@ def write_pole_scene(path):
 
 
 def read_binary_pcd(path):
-    """A binary PCD of revolve-lidar's fields (x y z range: float32, ring: uint16, object: int32, intensity and
-    time: float32, packed)."""
+    """A binary PCD of revolve-lidar's fields (x y z range: float32, ring: uint16, return: uint8, object: int32,
+    intensity and time: float32, packed)."""
     data = path.read_bytes()
     header_end = data.index(b"DATA binary\n") + len(b"DATA binary\n")
     header = data[:header_end].decode()
-    assert "FIELDS x y z range ring object intensity time\n" in header
+    assert "FIELDS x y z range ring return object intensity time\n" in header
     points = np.frombuffer(
-        data[header_end:], dtype=np.dtype([("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("range", "<f4"), ("ring", "<u2"), ("object", "<i4"),
-                                     ("intensity", "<f4"), ("time", "<f4")])
+        data[header_end:], dtype=np.dtype([("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("range", "<f4"), ("ring", "<u2"), ("return", "u1"),
+                                     ("object", "<i4"), ("intensity", "<f4"), ("time", "<f4")])
     )
     width = int(next(line.split()[1] for line in header.splitlines() if line.startswith("WIDTH")))
     return points, width

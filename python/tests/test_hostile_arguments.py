@@ -376,7 +376,7 @@ def test_scan_file_beam_counts_are_checked_without_overflow(tmp_path, poses):
     lidar = revolve.Lidar({"pose": {"position": [0, 0, 0.5]}, "horizontal": {"samples": 1024, "min_angle": -3, "max_angle": 3},
                            "range": {"min": 0.1, "max": 10}})
     assert lidar.beams_per_pose == 1024
-    with pytest.raises(ValueError, match=r"2\^31 - 1 beams"):
+    with pytest.raises(ValueError, match=r"2\^31 - 1 points"):
         scan_file = revolve.ScanFile(tmp_path / "scan.pcd", lidar, poses)
         del scan_file
     assert list(tmp_path.iterdir()) == []

@@ -238,7 +238,7 @@ TEST(Sizes, AScanBeyondWhatAFileHoldsIsRefusedBeforeTracing) {
   dir.write("poses.csv", testing::manyPoses(200));
   expectRefusal(
       kLidar, "revolve-lidar", dir, {"scene.json", "--sensor", "sensor.json", "--poses", "poses.csv", "-o", "scan.pcd"},
-      "poses.csv: 200 poses x 16777216 beams (sensor.json) = 3355443200 beams; a scan holds at most 2^31 - 1");
+      "poses.csv: 200 poses x 16777216 points (sensor.json) = 3355443200 points; a scan holds at most 2^31 - 1");
 }
 
 TEST(Sizes, AMeshBeyondTheMachinesMemoryIsRefusedBeforeBuilding) {

@@ -179,7 +179,7 @@ TEST(LidarMotionTest, AScanTracedInPartsIsTheWholeScanBitForBit) {
           },
           threads, nullptr, first, count);
       for (std::size_t b = 0; b < beams.size(); ++b) {
-        const io::BeamReturn& want = whole.beams[first * lidar.beamsPerPose() + b];
+        const io::BeamReturn& want = whole.points[first * lidar.beamsPerPose() + b];
         ASSERT_EQ(std::memcmp(&beams[b], &want, sizeof want), 0) << "beam " << b;
       }
     }

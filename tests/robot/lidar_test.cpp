@@ -198,8 +198,8 @@ TEST(LidarTest, SensorAtTheCentreOfACylinderReadsItsRadius) {
   const scene::EmbreeScene built(scene, {});
   const double tolerance = 0x1p-21 * 4 * radius;  // float ulps of the range (2^-23 of 4 m) with room
   const io::ScanTable planar = robot::Lidar(built, sensor(3600, -M_PI, M_PI, {})).scan(std::vector<io::RobotPose>{{}});
-  ASSERT_EQ(planar.beams.size(), 3600u);
-  for (const io::BeamReturn& beam : planar.beams) {
+  ASSERT_EQ(planar.points.size(), 3600u);
+  for (const io::BeamReturn& beam : planar.points) {
     EXPECT_NEAR(beam.range, radius, tolerance);
     EXPECT_NEAR(std::hypot(beam.x, beam.y), radius, tolerance);
     EXPECT_EQ(beam.object, 0);
@@ -208,7 +208,7 @@ TEST(LidarTest, SensorAtTheCentreOfACylinderReadsItsRadius) {
   for (int k = 0; k < 16; ++k) elevations.push_back(-0.26 + k * 0.52 / 15);
   const io::ScanTable spatial = robot::Lidar(built, sensor(1800, -M_PI, M_PI * (1 - 2.0 / 1800), elevations))
                                     .scan(std::vector<io::RobotPose>{{}});
-  ASSERT_EQ(spatial.beams.size(), 16u * 1800);
+  ASSERT_EQ(spatial.points.size(), 16u * 1800);
   for (std::size_t ring = 0; ring < 16; ++ring) {
     for (std::size_t i = 0; i < 1800; ++i) {
       const io::BeamReturn& beam = spatial.at(0, ring, i);
@@ -267,16 +267,16 @@ TEST(LidarTest, NoReturnBeyondMaxOrBelowMinIsInfNeverClamped) {
   const scene::EmbreeScene built(scene, {});
   io::SensorDescription s = sensor(100, -M_PI, M_PI, {});
   s.rangeMax = 1.5;  // the wall is at 2: beyond max
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams) {
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).points) {
     EXPECT_TRUE(std::isinf(beam.range));
     EXPECT_EQ(beam.object, -1);
   }
   s.rangeMin = 2.5;  // below min
   s.rangeMax = 10;
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams)
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).points)
     EXPECT_TRUE(std::isinf(beam.range));
   s.rangeMin = 1.5;
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams)
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).points)
     EXPECT_NEAR(beam.range, 2, 1e-6);
 }
 
@@ -292,14 +292,14 @@ TEST(LidarTest, NoiseHasItsMeanAndStddevWhateverTheThreadCount) {
   const std::vector<io::RobotPose> poses(5, io::RobotPose{});
   const io::ScanTable one = robot::Lidar(built, s).scan(poses, 1);
   const io::ScanTable two = robot::Lidar(built, s).scan(poses, 2);
-  ASSERT_EQ(one.beams.size(), two.beams.size());
-  for (std::size_t i = 0; i < one.beams.size(); ++i) {
-    ASSERT_EQ(one.beams[i].range, two.beams[i].range) << "beam " << i;  // bit for bit
-    ASSERT_EQ(one.beams[i].x, two.beams[i].x);
+  ASSERT_EQ(one.points.size(), two.points.size());
+  for (std::size_t i = 0; i < one.points.size(); ++i) {
+    ASSERT_EQ(one.points[i].range, two.points[i].range) << "beam " << i;  // bit for bit
+    ASSERT_EQ(one.points[i].x, two.points[i].x);
   }
-  const double n = double(one.beams.size());
+  const double n = double(one.points.size());
   double sum = 0, sum2 = 0, within = 0;
-  for (const io::BeamReturn& beam : one.beams) {
+  for (const io::BeamReturn& beam : one.points) {
     const double e = beam.range - 2.0;
     sum += e, sum2 += e * e;
     within += std::abs(e - s.noiseMean) <= s.noiseStddev ? 1 : 0;
@@ -314,13 +314,13 @@ TEST(LidarTest, NoiseHasItsMeanAndStddevWhateverTheThreadCount) {
   s.noiseSeed = 8;
   const io::ScanTable other = robot::Lidar(built, s).scan(poses, 2);
   int same = 0;
-  for (std::size_t i = 0; i < one.beams.size(); ++i) same += one.beams[i].range == other.beams[i].range ? 1 : 0;
+  for (std::size_t i = 0; i < one.points.size(); ++i) same += one.points[i].range == other.points[i].range ? 1 : 0;
   EXPECT_LT(same, 100);
   // Beams without a return get no noise: they stay inf.
   const io::SceneDescription empty =
       testing::sceneOf({{std::vector<Point2>{{2, 5}, {2, 6}}, testing::at(0, 0), "above"}});
   const scene::EmbreeScene nothing(empty, {});
-  for (const io::BeamReturn& beam : robot::Lidar(nothing, s).scan(poses, 2).beams) EXPECT_TRUE(std::isinf(beam.range));
+  for (const io::BeamReturn& beam : robot::Lidar(nothing, s).scan(poses, 2).points) EXPECT_TRUE(std::isinf(beam.range));
 }
 
 TEST(LidarTest, ResolutionRoundsRangesToItsMultiples) {
@@ -330,7 +330,7 @@ TEST(LidarTest, ResolutionRoundsRangesToItsMultiples) {
   io::SensorDescription s = sensor(2001, -0.5, 0.5, {});
   s.resolution = 0.01;
   int returns = 0;
-  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).beams) {
+  for (const io::BeamReturn& beam : robot::Lidar(built, s).scan(std::vector<io::RobotPose>{{}}).points) {
     if (std::isinf(beam.range)) continue;
     ++returns;
     // A multiple of 0.01 as stored in a float: within its rounding (2^-24 of the range).
@@ -357,10 +357,10 @@ TEST(LidarTest, MeshRangesAreLongerAndImproveWithSlices) {
     const io::ScanTable meshed = robot::Lidar(meshScene, s).scan(poses);
     double sum = 0;
     int both = 0;
-    for (std::size_t i = 0; i < exact.beams.size(); ++i) {
-      if (std::isinf(exact.beams[i].range) || std::isinf(meshed.beams[i].range)) continue;
-      EXPECT_GE(meshed.beams[i].range, exact.beams[i].range - 1e-6);
-      sum += meshed.beams[i].range - exact.beams[i].range, ++both;
+    for (std::size_t i = 0; i < exact.points.size(); ++i) {
+      if (std::isinf(exact.points[i].range) || std::isinf(meshed.points[i].range)) continue;
+      EXPECT_GE(meshed.points[i].range, exact.points[i].range - 1e-6);
+      sum += meshed.points[i].range - exact.points[i].range, ++both;
     }
     ASSERT_GT(both, 1000);
     EXPECT_LT(sum / both, previous);
@@ -436,11 +436,11 @@ TEST(LidarTest, IntensityNoiseIsRelativeSeededAndLeavesRangesAlone) {
   const io::ScanTable again = robot::Lidar(built, s).scan(poses, 2);
   double sum = 0, sumSquares = 0;
   int n = 0;
-  for (std::size_t i = 0; i < quiet.beams.size(); ++i) {
-    EXPECT_EQ(noisy.beams[i].range, quiet.beams[i].range);          // ranges untouched
-    EXPECT_EQ(noisy.beams[i].intensity, again.beams[i].intensity);  // seeded per beam, not per thread
-    if (std::isinf(quiet.beams[i].range)) continue;
-    const double z = (double(noisy.beams[i].intensity) / quiet.beams[i].intensity - 1) / 0.1;
+  for (std::size_t i = 0; i < quiet.points.size(); ++i) {
+    EXPECT_EQ(noisy.points[i].range, quiet.points[i].range);          // ranges untouched
+    EXPECT_EQ(noisy.points[i].intensity, again.points[i].intensity);  // seeded per beam, not per thread
+    if (std::isinf(quiet.points[i].range)) continue;
+    const double z = (double(noisy.points[i].intensity) / quiet.points[i].intensity - 1) / 0.1;
     sum += z, sumSquares += z * z, ++n;
   }
   ASSERT_GT(n, 1000);

@@ -128,7 +128,7 @@ TEST(LidarPacketTest, ScanEqualsSingleBeamsWhereRingsEndMidPacket) {
       }
     }
   }
-  EXPECT_GT(returns, int(scan.beams.size()) / 2);
+  EXPECT_GT(returns, int(scan.points.size()) / 2);
 }
 
 }  // namespace

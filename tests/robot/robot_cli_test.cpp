@@ -83,15 +83,15 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(run.out, HasSubstr("3 poses x 3 beams (1 ring x 3 azimuths)"));
   const std::vector<std::string> rows = lines(readWholeFile(dir / "scan.csv"));
   ASSERT_EQ(rows.size(), 10u);
-  EXPECT_EQ(rows[0], "pose,ring,azimuth,elevation,range,x,y,z,object,intensity,time");
+  EXPECT_EQ(rows[0], "pose,ring,return,azimuth,elevation,range,x,y,z,object,intensity,time");
   // Pose 0, beam 1 looks along +x at the pole: 2 - 0.25 = 1.75; pose 1 from 0.5 further on: 1.25;
   // pose 2 faces -x: nothing. Beams at +-pi/2 see nothing (the floor is below the plane).
   // Head-on (the pole's normal along the beam), reflectivity 1: intensity 1 / range^2.
   // No rotation_rate: every beam at the pose's instant, time 0.
-  expectRow(rows[2], {0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0, 1 / (1.75 * 1.75), 0});
-  expectRow(rows[5], {1, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0, 1 / (1.25 * 1.25), 0});
-  EXPECT_EQ(rows[8], "2,0,0,0,inf,,,,,,0");
-  EXPECT_EQ(rows[1], "0,0,-1.57079633,0,inf,,,,,,0");
+  expectRow(rows[2], {0, 0, 0, 0, 0, 1.75, 1.75, 0, 0.5, 0, 1 / (1.75 * 1.75), 0});
+  expectRow(rows[5], {1, 0, 0, 0, 0, 1.25, 1.75, 0, 0.5, 0, 1 / (1.25 * 1.25), 0});
+  EXPECT_EQ(rows[8], "2,0,0,0,0,inf,,,,,,0");
+  EXPECT_EQ(rows[1], "0,0,0,-1.57079633,0,inf,,,,,,0");
 
   const testing::ProcessResult pcd =
       runProcess(REVOLVE_LIDAR_PATH, {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv",
@@ -101,8 +101,8 @@ TEST(RevolveLidarCliTest, WritesCsvPcdAndPlotWithTheClosedFormRanges) {
   EXPECT_THAT(cloud, HasSubstr("\nWIDTH 3\nHEIGHT 3\n"));
   const std::vector<std::string> points = lines(cloud);
   ASSERT_EQ(points.size(), 11u + 9);  // the header's 11 lines, then WIDTH x HEIGHT points
-  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0, 1 / (1.75 * 1.75), 0}, ' ');
-  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 -1 nan 0");
+  expectRow(points[11 + 1], {1.75, 0, 0.5, 1.75, 0, 0, 0, 1 / (1.75 * 1.75), 0}, ' ');
+  EXPECT_EQ(points[11 + 0], "nan nan nan nan 0 0 -1 nan 0");
   // A PNG (its signature, then the IHDR chunk's big-endian width and height), of a readable size.
   const std::string png = readWholeFile(dir / "scan.png");
   ASSERT_GT(png.size(), 24u);
@@ -147,9 +147,9 @@ TEST(RevolveLidarCliTest, AMovingSensorsBeamsCarryTheirTimeAndRangeFromWhereThey
       // |(x, 0) + t (cos a, sin a) - (2, 0)| = 0.25.
       const double b = (x - 2) * std::cos(azimuth), c = (x - 2) * (x - 2) - 0.0625;
       const double range = -b - std::sqrt(b * b - c);
-      EXPECT_EQ(float(row[10]), float(time)) << rows[std::size_t(1 + 5 * pose + k)];
-      EXPECT_NEAR(row[4], range, 1e-6) << rows[std::size_t(1 + 5 * pose + k)];
-      EXPECT_NEAR(row[5], x + range * std::cos(azimuth), 1e-6);
+      EXPECT_EQ(float(row[11]), float(time)) << rows[std::size_t(1 + 5 * pose + k)];
+      EXPECT_NEAR(row[5], range, 1e-6) << rows[std::size_t(1 + 5 * pose + k)];
+      EXPECT_NEAR(row[6], x + range * std::cos(azimuth), 1e-6);
     }
   }
 }

@@ -166,7 +166,34 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
       BadSensor{"RotationRateNotANumber", with(R"("rotation_rate": 10)", R"("rotation_rate": "10 Hz")"),
                 "rotation_rate: expected a number, found string"},
       BadSensor{"PositionNotThree", with(R"([0.1, -0.2, 0.3])", "[0.1, -0.2]"),
-                "pose.position: expected an array of 3 numbers"}};
+                "pose.position: expected an array of 3 numbers"},
+      BadSensor{"NegativeDivergence", with(R"("rotation_rate": 10)", R"("divergence": -0.001)"),
+                "divergence: -0.001 is out of range: a beam's full divergence angle lies in [0, 0.1] radians"},
+      BadSensor{"DivergenceInDegrees", with(R"("rotation_rate": 10)", R"("divergence": 0.2)"),
+                "divergence: 0.2 is out of range"},
+      BadSensor{"DivergenceNaN", with(R"("rotation_rate": 10)", R"("divergence": NaN)"), "not valid JSON"},
+      BadSensor{"SubraysZero", with(R"("rotation_rate": 10)", R"("subrays": 0)"),
+                "subrays: 0 is out of range: must lie in [1, 256]"},
+      BadSensor{"SubraysTooMany", with(R"("rotation_rate": 10)", R"("subrays": 257)"),
+                "subrays: 257 is out of range: must lie in [1, 256]"},
+      BadSensor{"UnknownReturns", with(R"("rotation_rate": 10)", R"("returns": "dual")"),
+                R"(returns: "dual" is not a return mode; expected one of: "first", "last", "strongest", "all")"},
+      BadSensor{"MaxReturnsZero", with(R"("rotation_rate": 10)", R"("returns": "all", "max_returns": 0)"),
+                "max_returns: 0 is out of range: must lie in [1, 255]"},
+      BadSensor{"MaxReturnsWithoutAll", with(R"("rotation_rate": 10)", R"("returns": "last", "max_returns": 2)"),
+                R"(max_returns: applies to "returns": "all" only; returns is "last")"},
+      BadSensor{"SeparationZero", with(R"("rotation_rate": 10)", R"("return_separation": 0)"),
+                "return_separation: 0 is not above 0"},
+      BadSensor{"PatternWithFans", with(R"("rotation_rate": 10)", R"("pattern": "beams.csv")"),
+                R"(horizontal: give either "pattern" (a beam table) or the fans)"},
+      BadSensor{
+          "PatternMissing",
+          R"({"pose": {"position": [0, 0, 0]}, "pattern": "/nonexistent/beams.csv", "range": {"min": 0, "max": 5}})",
+          "pattern: /nonexistent/beams.csv"},
+      BadSensor{
+          "PatternAndRotationRate",
+          R"({"pose": {"position": [0, 0, 0]}, "pattern": "b.csv", "rotation_rate": 10, "range": {"min": 0, "max": 5}})",
+          "rotation_rate: a pattern's beams carry their own firing times"}};
   for (const BadSensor& bad : cases) {
     SCOPED_TRACE(bad.name);
     try {
@@ -178,6 +205,33 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
       EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos);
     }
   }
+}
+
+TEST(SensorFileTest, FootprintAndReturnKeys) {
+  const SensorDescription s = parseSensor(
+      R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
+          "range": {"min": 0, "max": 5}, "divergence": 0.003, "subrays": 16, "returns": "all", "max_returns": 3,
+          "return_separation": 0.25})",
+      "s.json");
+  EXPECT_EQ(s.divergence, 0.003);
+  EXPECT_EQ(s.subrays, 16);
+  EXPECT_EQ(s.returns, ReturnMode::all);
+  EXPECT_EQ(s.maxReturns, 3);
+  EXPECT_EQ(s.layers(), 3);
+  EXPECT_EQ(s.returnSeparation, 0.25);
+  const SensorDescription d = parseSensor(
+      R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 4, "min_angle": 0, "max_angle": 3},
+          "range": {"min": 0, "max": 5}, "returns": "strongest"})",
+      "s.json");
+  EXPECT_EQ(d.divergence, 0);  // a ray
+  EXPECT_EQ(d.subrays, 1);
+  EXPECT_EQ(d.returns, ReturnMode::strongest);
+  EXPECT_EQ(d.layers(), 1);
+  EXPECT_EQ(parseSensor(R"({"pose": {"position": [0, 0, 0]}, "horizontal": {"samples": 1, "min_angle": 0,
+                            "max_angle": 0}, "range": {"min": 0, "max": 5}, "returns": "all"})",
+                        "s.json")
+                .maxReturns,
+            2);  // the default
 }
 
 TEST(SensorFileTest, TooManyBeamsAPose) {

@@ -51,20 +51,22 @@ void run(const Options& options, bool pcdDataGiven) {
     std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
   }
   const io::SensorDescription sensor = io::readSensor(options.sensor);
-  if (options.plotRing && *options.plotRing >= sensor.elevations.size()) {
+  const io::ScanLayout sweep = io::scanLayout(sensor, 1);
+  if (options.plotRing && *options.plotRing >= sweep.rings()) {
     throw std::runtime_error("--plot-ring " + std::to_string(*options.plotRing) + ": " + options.sensor + " has " +
-                             app::counted(sensor.elevations.size(), "ring") + ", numbered from 0");
+                             app::counted(sweep.rings(), "ring") + ", numbered from 0" +
+                             (sweep.pattern ? " (a beam pattern is one ring)" : ""));
   }
   if (options.plotRing && options.plot.empty()) throw std::runtime_error("--plot-ring needs --plot");
   // Without poses, one: the robot at the origin, so the sensor's pose is its world pose.
   const std::vector<io::RobotPose> poses =
       options.poses.empty() ? std::vector<io::RobotPose>{io::RobotPose{}} : io::readPosesCsv(options.poses);
-  const std::uint64_t perPose = std::uint64_t(sensor.horizontal.samples) * sensor.elevations.size();
-  if (std::uint64_t(poses.size()) * perPose > io::kMaxScanBeams) {
+  const std::uint64_t perPose = sweep.pointsPerPose();
+  if (std::uint64_t(poses.size()) * perPose > io::kMaxScanPoints) {
     throw std::runtime_error(
         (options.poses.empty() ? options.sensor : options.poses) + ": " + std::to_string(poses.size()) + " poses x " +
-        std::to_string(perPose) + " beams (" + options.sensor + ") = " + std::to_string(poses.size() * perPose) +
-        " beams; a scan holds at most 2^31 - 1 (PCD's point count, as PCL indexes it): split the poses");
+        std::to_string(perPose) + " points (" + options.sensor + ") = " + std::to_string(poses.size() * perPose) +
+        " points; a scan holds at most 2^31 - 1 (PCD's point count, as PCL indexes it): split the poses");
   }
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
@@ -107,10 +109,13 @@ void run(const Options& options, bool pcdDataGiven) {
 
   const std::string geometry = build.mesh ? "mesh, " + std::to_string(build.slices) + " slices" : "exact";
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const std::string shape =
+      layout.pattern ? "a beam pattern"
+                     : app::counted(layout.rings(), "ring") + " x " + app::counted(layout.columns(), "azimuth");
   std::printf(
-      "revolve-lidar: %s x %s (%s x %s): %s; traced in %.3g s (%.4g scans/s, %s, %s geometry); %.3g s with writing\n",
-      app::counted(poses.size(), "pose").c_str(), app::counted(lidar.beamsPerPose(), "beam").c_str(),
-      app::counted(layout.rings(), "ring").c_str(), app::counted(layout.azimuths.size(), "azimuth").c_str(),
+      "revolve-lidar: %s x %s (%s%s): %s; traced in %.3g s (%.4g scans/s, %s, %s geometry); %.3g s with writing\n",
+      app::counted(poses.size(), "pose").c_str(), app::counted(lidar.beamsPerPose(), "beam").c_str(), shape.c_str(),
+      layout.layers > 1 ? (", up to " + app::counted(layout.layers, "return") + " a beam").c_str() : "",
       app::counted(returns, "return").c_str(), tracing, tracing > 0 ? double(poses.size()) / tracing : 0.0,
       app::counted(std::size_t(threads), "thread").c_str(), geometry.c_str(), seconds);
 }
