@@ -24,7 +24,8 @@ packages=(
 case "${1:-}" in
   "") ;;
   --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-dev python3-matplotlib povray fonts-dejavu-core
-                     clang-format python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed python3-open3d) ;;
+                     clang-format python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed python3-open3d
+                     pcl-tools) ;;  # PCL reading the scans revolve-lidar writes
   *) echo "usage: $0 [--test]" >&2; exit 2 ;;
 esac
 

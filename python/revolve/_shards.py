@@ -52,7 +52,7 @@ def scan_shard(scene, sensor, poses, first_pose=0, threads=0, sweeps=None):
 
 def shard_poses(poses, first, count, lidar):
     """The poses a shard of `count` sweeps from pose `first` needs: poses[first : first + count] and,
-    for a sensor that moves during its sweeps (a rotation_rate and poses (N, 5) carrying times),
+    for a sensor that moves during its sweeps (a rotation_rate or pattern times, and poses (N, 5) carrying times),
     the poses after them up to the first after its last sweep's end, so that the shard's beams are
     traced from where the whole scan traces them (Lidar.scan's `sweeps` then counts the shard's own).
     `poses`: an (N, 3), (N, 4) or (N, 5) array, or a POSES.csv path (read_poses)."""
@@ -74,7 +74,7 @@ def shard_poses(poses, first, count, lidar):
     if not 1 <= count <= len(poses) - first:
         raise ValueError(f"count = {count}: a shard from pose {first} holds 1 to {len(poses) - first} poses")
     end = first + count
-    if poses.shape[1] == 5 and lidar.rotation_rate > 0 and end < len(poses):
+    if poses.shape[1] == 5 and lidar.sweep_duration > 0 and end < len(poses):
         last_end = poses[end - 1, 4] + lidar.sweep_duration
         end = min(len(poses), int(np.searchsorted(poses[:, 4], last_end, side="right")) + 1)
     return poses[first:end]

@@ -20,6 +20,12 @@ NOISY_SENSOR = {
 MOVING_SENSOR = {**NOISY_SENSOR, "rotation_rate": 10.0}
 
 
+# The moving sensor's beams as cones of 4 mrad sampled by 8 sub-rays, every return reported (up to
+# 2 a beam: the scan's second axis), with intensity noise: every new field depends on the pipeline.
+MULTI_RETURN_SENSOR = {**MOVING_SENSOR, "divergence": 0.004, "subrays": 8, "returns": "all", "max_returns": 2,
+                       "intensity_noise": {"stddev": 0.05, "seed": 3}}
+
+
 def write_sensor(path, sensor=NOISY_SENSOR):
     path.write_text(json.dumps(sensor))
     return path
@@ -71,7 +77,7 @@ def read_binary_pcd(path):
     data = path.read_bytes()
     header_end = data.index(b"DATA binary\n") + len(b"DATA binary\n")
     header = data[:header_end].decode()
-    assert "FIELDS x y z range ring return object intensity time\n" in header
+    assert "FIELDS x y z range ring return object intensity time\nSIZE 4 4 4 4 2 1 4 4 4\nTYPE F F F F U U I F F\n" in header
     points = np.frombuffer(
         data[header_end:], dtype=np.dtype([("x", "<f4"), ("y", "<f4"), ("z", "<f4"), ("range", "<f4"), ("ring", "<u2"), ("return", "u1"),
                                      ("object", "<i4"), ("intensity", "<f4"), ("time", "<f4")])
