@@ -45,6 +45,8 @@ build/bin/revolve-lidar scenes/robot_world.json --sensor examples/robot/lidar_2d
 PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_intensity.py docs/lidar_intensity.png
 # A moving sensor's sweep of the corridor beside the same sweep at rest (docs/robot.md, "Time and motion").
 PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_motion.py docs/lidar_motion.png
+# A dual-return scan of a pole in front of a wall: two returns where a beam straddles the pole's edge (docs/robot.md).
+PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_returns.py docs/lidar_returns.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png

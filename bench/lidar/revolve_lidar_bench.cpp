@@ -17,6 +17,9 @@
 //     mesh, each configuration timed --repeats
 //     times (whole passes over the poses for at least 0.25 s each), the configurations interleaved
 //     within each repeat; the median is reported.
+//  3. The cost of the returns' fields and of beam footprints on the 3-D sensor with exact
+//     surfaces: the scan (ranges, intensity, time) at rest and moving, and with 4 and 16 sub-rays
+//     a beam, against tracing its rays alone (lidar/return_costs.h).
 #include "cli/command_line.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
@@ -24,6 +27,7 @@
 #include "io/sensor_file.h"
 #include "io/text_files.h"
 #include "lidar/reference_ranges.h"
+#include "lidar/return_costs.h"
 #include "robot/lidar.h"
 #include "robot/sensor_rig.h"
 #include "run_info.h"
@@ -262,6 +266,9 @@ void run(const Options& options, const std::string& commandLine) {
     }
   }
 
+  // 3. What intensity, time, motion and footprints cost.
+  const Json returnCosts = bench::measureReturnCosts(*geometries[0].built, sensors[1], poses, options.repeats);
+
   Json sensorJson = Json::array();
   for (const io::SensorDescription& s : sensors) {
     sensorJson.push_back({{"name", s.file},
@@ -280,7 +287,8 @@ void run(const Options& options, const std::string& commandLine) {
                     {"range_error", errors},
                     {"equal_accuracy_mesh", geometries[equal].name},
                     {"equal_accuracy_rule", rule},
-                    {"throughput", throughput}};
+                    {"throughput", throughput},
+                    {"return_costs", returnCosts}};
   const std::string text = result.dump(1) + "\n";
   outputs.write(options.output, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
   outputs.commit();

@@ -18,11 +18,12 @@
 
 namespace revolve::robot {
 
-// One sub-ray's hit, or a group's return.
+// One sub-ray's hit, or a group's return. Plain data, without initialisers: the per-beam arrays
+// of it on the tracing path are left uninitialised until written.
 struct Echo {
-  double range = 0;      // along the ray, in scene units
-  double intensity = 0;  // reflectivity |cos theta| / range^2 (a return's: its group's share)
-  std::int32_t object = -1;
+  double range;      // along the ray, in scene units
+  double intensity;  // reflectivity |cos theta| / range^2 (a return's: its group's share)
+  std::int32_t object;
 };
 
 // Groups `hits` (sorted here, in place) into returns written to `returns` (room for hits.size());

@@ -79,12 +79,14 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   // Beams [first, first + count) of one ring of one pose, count <= beamsPerCall, their sub-rays
   // traced in packets, from the pose's frame or, while the sensor moves, each from its own:
   // `columnFrames` (the frames of their columns, in order) or, without it, made here. Their
-  // points go to out[pointOf(beam, layer) - outFirst].
-  const auto traceBeams = [&](std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
-                              const SensorFrame* columnFrames, io::BeamReturn* out, std::uint64_t outFirst) noexcept {
-    std::array<Ray, kMaxRays> rays;
-    std::array<Vec3d, kMaxRays> directions;
-    std::array<std::optional<scene::RangeHit>, kMaxRays> hits;
+  // points go to out[pointOf(beam, layer) - outFirst]. kRays: room for the call's sub-rays, a
+  // packet's for beams of one ray (the arrays below live on the stack of every call).
+  const auto traceBeams = [&]<std::size_t kRays>(std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
+                                                 const SensorFrame* columnFrames, io::BeamReturn* out,
+                                                 std::uint64_t outFirst) noexcept {
+    std::array<Ray, kRays> rays;
+    std::array<Vec3d, kRays> directions;
+    std::array<std::optional<scene::RangeHit>, kRays> hits;
     std::array<SensorFrame, kPacket> ownFrames;
     std::array<Vec3d, kPacket> axes;
     if (moving && columnFrames == nullptr) {
@@ -116,7 +118,7 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
       const std::size_t ring = std::size_t(beam % perPose) / columns, column = std::size_t(beam % columns);
       const float time = float(sensor_.columnTime(column));
       // The sub-rays' hits, as ranges along unit directions and intensities.
-      std::array<Echo, kMaxRays> echoes, groups;
+      std::array<Echo, kRays> echoes, groups;
       std::size_t hitCount = 0;
       for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
         const std::size_t q = k * std::size_t(subrays) + j;
@@ -140,8 +142,9 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
       }
       const std::size_t groupCount =
           groupEchoes(std::span(echoes.data(), hitCount), separation, subrays, std::span(groups.data(), hitCount));
-      // Each return measured: noise, rounding, the range gate (ROS: outside it, not a return).
-      std::array<io::BeamReturn, kMaxRays> measured;
+      // Each return measured (into echoes, reused): noise, rounding, the range gate (ROS: outside
+      // it, not a return).
+      std::array<Echo, kRays>& measured = echoes;
       std::size_t returned = 0;
       for (std::size_t g = 0; g < groupCount; ++g) {
         double range = groups[g].range + sensor_.noiseMean;
@@ -155,27 +158,33 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
           const double z = standardNormal(echoSeed(sensor_.intensityNoiseSeed, g), firstPose + pose, ring, column);
           intensity = std::max(0.0, intensity * (1 + sensor_.intensityNoiseStddev * z));
         }
-        // The return where the measured range puts it along the beam's axis, from the
-        // double-precision origin.
-        const SensorFrame& f = frame(k);
-        measured[returned++] = {float(range),
-                                float(f.origin[0] + range * axes[k][0]),
-                                float(f.origin[1] + range * axes[k][1]),
-                                float(f.origin[2] + range * axes[k][2]),
-                                groups[g].object,
-                                float(intensity),
-                                time};
+        measured[returned++] = {range, intensity, groups[g].object};
       }
       // The reported returns, nearest first.
-      std::size_t from = 0, reported = std::min(returned, layers);
+      std::size_t from = 0;
+      const std::size_t reported = std::min(returned, layers);
       if (returned > 0 && sensor_.returns == io::ReturnMode::last) from = returned - 1;
       if (returned > 0 && sensor_.returns == io::ReturnMode::strongest) {
         for (std::size_t g = 1; g < returned; ++g)
           if (measured[g].intensity > measured[from].intensity) from = g;
       }
+      const SensorFrame& f = frame(k);
       for (std::size_t layer = 0; layer < layers; ++layer) {
-        out[pointOf(beam, layer) - outFirst] =
-            layer < reported ? measured[from + layer] : io::BeamReturn{noReturn, 0, 0, 0, -1, 0, time};
+        io::BeamReturn& point = out[pointOf(beam, layer) - outFirst];
+        if (layer >= reported) {
+          point = {noReturn, 0, 0, 0, -1, 0, time};
+          continue;
+        }
+        // The return where the measured range puts it along the beam's axis, from the
+        // double-precision origin.
+        const Echo& r = measured[from + layer];
+        point = {float(r.range),
+                 float(f.origin[0] + r.range * axes[k][0]),
+                 float(f.origin[1] + r.range * axes[k][1]),
+                 float(f.origin[2] + r.range * axes[k][2]),
+                 r.object,
+                 float(r.intensity),
+                 time};
       }
     }
   };
@@ -210,7 +219,10 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
             const SensorFrame* own = columnFrames.empty()
                                          ? nullptr
                                          : &columnFrames[std::size_t((pose - firstPose) * columns + beam % columns)];
-            traceBeams(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
+            if (subrays == 1)
+              traceBeams.template operator()<kPacket>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
+            else
+              traceBeams.template operator()<kMaxRays>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
             i += n;
           }
         });

@@ -13,7 +13,7 @@ import pytest
 
 import revolve
 from conftest import SOURCE_DIR, run_tool
-from robot_inputs import MOVING_SENSOR, timed_corridor_poses, write_poses, write_sensor
+from robot_inputs import MULTI_RETURN_SENSOR, timed_corridor_poses, write_poses, write_sensor
 
 distributed = pytest.importorskip("distributed", reason="Dask distributed (Debian: python3-distributed) is not installed")
 
@@ -39,7 +39,7 @@ def job(tmp_path_factory):
     folder = tmp_path_factory.mktemp("dask")
     job = {
         "scene": str(SOURCE_DIR / "scenes" / "robot_world.json"),
-        "sensor": str(write_sensor(folder / "sensor.json", MOVING_SENSOR)),
+        "sensor": str(write_sensor(folder / "sensor.json", MULTI_RETURN_SENSOR)),
         "poses_file": write_poses(folder / "poses.csv", timed_corridor_poses(48)),
         "folder": folder,
     }

@@ -226,6 +226,15 @@ std::vector<BadRun> badLidarRuns() {
       {"TimesNotIncreasing", kLidarArgs,
        "poses.csv:3: time = \"0.1\" does not increase: times are strictly increasing (the pose on line 2 is at 0.2)",
        kScene, kSensor, "x,y,yaw,time\n0,0,0,0.2\n1,0,0,0.1\n"},
+      {"SubraysZero", kLidarArgs, "sensor.json: subrays: 0 is out of range: must lie in [1, 256]", kScene,
+       replaced(kSensor, R"("range")", R"("subrays": 0, "range")")},
+      {"ReturnsUnknown", kLidarArgs, R"(sensor.json: returns: "dual" is not a return mode)", kScene,
+       replaced(kSensor, R"("range")", R"("returns": "dual", "range")")},
+      {"DivergenceInDegrees", kLidarArgs, "sensor.json: divergence: 3 is out of range", kScene,
+       replaced(kSensor, R"("range")", R"("divergence": 3, "range")")},
+      // The poses file named as the pattern: its first line is no pattern's header.
+      {"PatternBadLine", kLidarArgs, R"(poses.csv:1: header "x,y,yaw": a beam pattern's header is)", kScene,
+       R"({"pose": {"position": [0, 0, 0.5]}, "pattern": "poses.csv", "range": {"min": 0.1, "max": 30}})"},
   };
 }
 
