@@ -69,43 +69,76 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   const auto pointOf = [&](std::uint64_t beam, std::size_t layer) noexcept {
     return (beam / perPose * layers + layer) * perPose + beam % perPose;
   };
-  const auto axesOf = [&](std::uint64_t beam) noexcept {
-    const std::size_t ring = std::size_t(beam % perPose) / columns, column = std::size_t(beam % columns);
-    const Angle& a = azimuths_[column];
-    const Angle& e = elevations_[layout_.pattern ? column : ring];
-    return BeamAxes::at(a.cosine, a.sine, e.cosine, e.sine);
+  // A return measured from its traced echo (the `echo`-th of its beam in range order): noise,
+  // rounding to the resolution and the range gate (ROS: outside it, not a return), then the
+  // intensity's noise. False: no return.
+  const auto measure = [&](Echo& e, std::size_t echo, std::uint64_t pose, std::size_t ring,
+                           std::size_t column) noexcept {
+    double range = e.range + sensor_.noiseMean;
+    if (sensor_.noiseStddev > 0)
+      range += sensor_.noiseStddev * standardNormal(echoSeed(sensor_.noiseSeed, echo), firstPose + pose, ring, column);
+    if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
+    if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return false;
+    if (sensor_.intensityNoiseStddev > 0) {
+      const double z = standardNormal(echoSeed(sensor_.intensityNoiseSeed, echo), firstPose + pose, ring, column);
+      e.intensity = std::max(0.0, e.intensity * (1 + sensor_.intensityNoiseStddev * z));
+    }
+    e.range = range;
+    return true;
+  };
+  // A sub-ray's hit as an echo: the range along the unit direction `d` (t is in units of the ray's
+  // float direction, whose length differs from 1 by its rounding) and its intensity. A Lambertian
+  // surface of reflectivity r returns r |cos theta| of the light (theta between the ray and the
+  // surface's normal: the exact surface's, a facet's for a mesh), received over a solid angle
+  // falling as 1 / range^2; the traced range, not the noisy one: the range noise models the range
+  // measurement only.
+  const auto echoOf = [](const Ray& ray, const Vec3d& d, const scene::RangeHit& hit) noexcept -> Echo {
+    const double length =
+        std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
+                  double(ray.direction.z) * ray.direction.z);
+    const double traced = double(hit.t) * length;
+    const double cosine =
+        std::abs(double(hit.normal.x) * d[0] + double(hit.normal.y) * d[1] + double(hit.normal.z) * d[2]);
+    return {traced, double(hit.reflectivity) * cosine / (traced * traced), std::int32_t(hit.object)};
   };
 
   // Beams [first, first + count) of one ring of one pose, count <= beamsPerCall, their sub-rays
   // traced in packets, from the pose's frame or, while the sensor moves, each from its own:
   // `columnFrames` (the frames of their columns, in order) or, without it, made here. Their
-  // points go to out[pointOf(beam, layer) - outFirst]. kRays: room for the call's sub-rays, a
-  // packet's for beams of one ray (the arrays below live on the stack of every call).
-  const auto traceBeams = [&]<std::size_t kRays>(std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
-                                                 const SensorFrame* columnFrames, io::BeamReturn* out,
-                                                 std::uint64_t outFirst) noexcept {
+  // points go to out[pointOf(beam, layer) - outFirst]. kSingleRay: beams of one ray each (the
+  // common case: no footprint, so no grouping), whose arrays hold a packet.
+  const auto traceBeams = [&]<bool kSingleRay>(std::uint64_t first, std::size_t count, const SensorFrame& poseFrame,
+                                               const SensorFrame* columnFrames, io::BeamReturn* out,
+                                               std::uint64_t outFirst) noexcept {
+    constexpr std::size_t kRays = kSingleRay ? kPacket : kMaxRays;
     std::array<Ray, kRays> rays;
-    std::array<Vec3d, kRays> directions;
+    std::array<Vec3d, kSingleRay ? 1 : kRays> directions;  // sub-rays' (a single ray's is its axis)
     std::array<std::optional<scene::RangeHit>, kRays> hits;
     std::array<SensorFrame, kPacket> ownFrames;
     std::array<Vec3d, kPacket> axes;
+    // The call's beams share their pose and ring: their columns run on from the first's.
+    const std::uint64_t pose = first / perPose;
+    const std::size_t within = std::size_t(first % perPose), ring = within / columns, column0 = within % columns;
+    const std::uint64_t rowPoint = pose * layers * perPose + ring * columns + column0 - outFirst;
     if (moving && columnFrames == nullptr) {
-      const std::size_t pose = std::size_t(first / perPose);
       for (std::size_t k = 0; k < count; ++k)
-        ownFrames[k] = motion.at(pose, sensor_.columnTime(std::size_t((first + k) % columns)));
+        ownFrames[k] = motion.at(std::size_t(pose), sensor_.columnTime(column0 + k));
       columnFrames = ownFrames.data();
     }
     const auto frame = [&](std::size_t k) -> const SensorFrame& { return moving ? columnFrames[k] : poseFrame; };
     const std::size_t rayCount = count * std::size_t(subrays);
     for (std::size_t k = 0; k < count; ++k) {
       const SensorFrame& f = frame(k);
-      const BeamAxes beam = axesOf(first + k);
+      const Angle& a = azimuths_[column0 + k];
+      const Angle& e = elevations_[layout_.pattern ? column0 + k : ring];
+      const BeamAxes beam = BeamAxes::at(a.cosine, a.sine, e.cosine, e.sine);
       axes[k] = f.rotate(beam.axis);
+      const Vec3 origin{float(f.origin[0]), float(f.origin[1]), float(f.origin[2])};
       for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
         const std::size_t q = k * std::size_t(subrays) + j;
-        directions[q] = subrays == 1 ? axes[k] : f.rotate(beam.direction(footprint_[j]));
-        rays[q].origin = {float(f.origin[0]), float(f.origin[1]), float(f.origin[2])};
-        rays[q].direction = {float(directions[q][0]), float(directions[q][1]), float(directions[q][2])};
+        const Vec3d& d = kSingleRay ? axes[k] : (directions[q] = f.rotate(beam.direction(footprint_[j])));
+        rays[q].origin = origin;
+        rays[q].direction = {float(d[0]), float(d[1]), float(d[2])};
       }
     }
     for (std::size_t q = 0; q < rayCount; q += kPacket) {
@@ -113,54 +146,31 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
       scene_.nearest(std::span<const Ray>(rays.data() + q, n), std::span(hits.data() + q, n));
     }
     for (std::size_t k = 0; k < count; ++k) {
-      const std::uint64_t beam = first + k;
-      const std::uint64_t pose = beam / perPose;
-      const std::size_t ring = std::size_t(beam % perPose) / columns, column = std::size_t(beam % columns);
+      const std::size_t column = column0 + k;
       const float time = float(sensor_.columnTime(column));
-      // The sub-rays' hits, as ranges along unit directions and intensities.
-      std::array<Echo, kRays> echoes, groups;
-      std::size_t hitCount = 0;
-      for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
-        const std::size_t q = k * std::size_t(subrays) + j;
-        const std::optional<scene::RangeHit>& hit = hits[q];
-        if (!hit) continue;
-        // t is in units of the float direction, whose length differs from 1 by its rounding.
-        const Ray& ray = rays[q];
-        const double length =
-            std::sqrt(double(ray.direction.x) * ray.direction.x + double(ray.direction.y) * ray.direction.y +
-                      double(ray.direction.z) * ray.direction.z);
-        const double traced = double(hit->t) * length;
-        // Intensity: a Lambertian surface of reflectivity r returns r |cos theta| of the light
-        // (theta between the ray and the surface's normal: the exact surface's, a facet's for a
-        // mesh), received over a solid angle falling as 1 / range^2; the traced range, not the
-        // noisy one: the range noise models the range measurement only.
-        const Vec3d& d = directions[q];
-        const double cosine =
-            std::abs(double(hit->normal.x) * d[0] + double(hit->normal.y) * d[1] + double(hit->normal.z) * d[2]);
-        echoes[hitCount++] = {traced, double(hit->reflectivity) * cosine / (traced * traced),
-                              std::int32_t(hit->object)};
-      }
-      const std::size_t groupCount =
-          groupEchoes(std::span(echoes.data(), hitCount), separation, subrays, std::span(groups.data(), hitCount));
-      // Each return measured (into echoes, reused): noise, rounding, the range gate (ROS: outside
-      // it, not a return).
-      std::array<Echo, kRays>& measured = echoes;
+      // The beam's returns, measured, nearest first.
+      std::array<Echo, kSingleRay ? 1 : kRays> measured;
       std::size_t returned = 0;
-      for (std::size_t g = 0; g < groupCount; ++g) {
-        double range = groups[g].range + sensor_.noiseMean;
-        if (sensor_.noiseStddev > 0) {
-          range += sensor_.noiseStddev * standardNormal(echoSeed(sensor_.noiseSeed, g), firstPose + pose, ring, column);
+      if constexpr (kSingleRay) {
+        if (hits[k]) {
+          measured[0] = echoOf(rays[k], axes[k], *hits[k]);
+          returned = measure(measured[0], 0, pose, ring, column) ? 1 : 0;
         }
-        if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
-        if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) continue;
-        double intensity = groups[g].intensity;
-        if (sensor_.intensityNoiseStddev > 0) {
-          const double z = standardNormal(echoSeed(sensor_.intensityNoiseSeed, g), firstPose + pose, ring, column);
-          intensity = std::max(0.0, intensity * (1 + sensor_.intensityNoiseStddev * z));
+      } else {
+        std::array<Echo, kRays> echoes;
+        std::size_t hitCount = 0;
+        for (std::size_t j = 0; j < std::size_t(subrays); ++j) {
+          const std::size_t q = k * std::size_t(subrays) + j;
+          if (hits[q]) echoes[hitCount++] = echoOf(rays[q], directions[q], *hits[q]);
         }
-        measured[returned++] = {range, intensity, groups[g].object};
+        const std::size_t groups =
+            groupEchoes(std::span(echoes.data(), hitCount), separation, subrays, std::span(measured.data(), hitCount));
+        for (std::size_t g = 0; g < groups; ++g) {
+          Echo e = measured[g];
+          if (measure(e, g, pose, ring, column)) measured[returned++] = e;  // returned <= g: in place
+        }
       }
-      // The reported returns, nearest first.
+      // The reported returns: the first `layers` (nearest first), or the last or strongest one.
       std::size_t from = 0;
       const std::size_t reported = std::min(returned, layers);
       if (returned > 0 && sensor_.returns == io::ReturnMode::last) from = returned - 1;
@@ -170,7 +180,7 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
       }
       const SensorFrame& f = frame(k);
       for (std::size_t layer = 0; layer < layers; ++layer) {
-        io::BeamReturn& point = out[pointOf(beam, layer) - outFirst];
+        io::BeamReturn& point = out[rowPoint + layer * perPose + k];
         if (layer >= reported) {
           point = {noReturn, 0, 0, 0, -1, 0, time};
           continue;
@@ -220,9 +230,9 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
                                          ? nullptr
                                          : &columnFrames[std::size_t((pose - firstPose) * columns + beam % columns)];
             if (subrays == 1)
-              traceBeams.template operator()<kPacket>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
+              traceBeams.template operator()<true>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
             else
-              traceBeams.template operator()<kMaxRays>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
+              traceBeams.template operator()<false>(beam, n, frames[pose - firstPose], own, out.data(), outFirst);
             i += n;
           }
         });

@@ -2,9 +2,10 @@
 // a one-line message, or a description that keeps the reader's promises (sample and channel counts
 // within their limits, the position within the coordinate limit, angles finite and within their
 // ranges, min <= max and a fan spanning at
-// most a turn, range 0 <= min < max, resolution and stddev >= 0), whose beam angles (fanAngles)
-// run from min_angle to max_angle without going back. Anything else, or a sanitizer report, is a
-// finding.
+// most a turn, range 0 <= min < max, resolution and stddev >= 0, the footprint and return keys
+// within theirs, points a pose within the limit), whose beam angles (fanAngles) run from min_angle
+// to max_angle without going back. Anything else, or a sanitizer report, is a finding. (A
+// "pattern" names a file, which the fuzzer can only rarely name: patterns are tested apart.)
 #include "fuzz_checks.h"
 #include "geometry/ray_limits.h"
 #include "io/sensor_file.h"
@@ -40,6 +41,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FUZZ_CHECK(sensor.rangeMin >= 0 && sensor.rangeMin < sensor.rangeMax && std::isfinite(sensor.rangeMax));
   FUZZ_CHECK(sensor.resolution >= 0 && std::isfinite(sensor.resolution));
   FUZZ_CHECK(sensor.noiseStddev >= 0 && std::isfinite(sensor.noiseStddev) && std::isfinite(sensor.noiseMean));
+  FUZZ_CHECK(sensor.divergence >= 0 && sensor.divergence <= io::kMaxDivergence);
+  FUZZ_CHECK(sensor.subrays >= 1 && sensor.subrays <= io::kMaxSubrays);
+  FUZZ_CHECK(sensor.layers() >= 1 && sensor.layers() <= io::kMaxReturns);
+  FUZZ_CHECK(sensor.returns == io::ReturnMode::all || sensor.layers() == 1);
+  FUZZ_CHECK(sensor.returnSeparation > 0 && std::isfinite(sensor.returnSeparation));
+  const long beams =
+      sensor.pattern.empty() ? long(fan.samples) * long(sensor.elevations.size()) : long(sensor.pattern.size());
+  FUZZ_CHECK(beams * sensor.layers() <= io::kMaxBeamsPerPose);
   if (fan.samples <= 4096) {  // the angles themselves, where that stays quick
     const std::vector<double> angles = io::fanAngles(fan);
     FUZZ_CHECK(angles.size() == std::size_t(fan.samples));
