@@ -32,7 +32,7 @@ import revolve
 
 
 def scan_to_file(client, scene, sensor, poses, output, shard_size, data="ascii", threads=1, retries=3, inputs=(), trace=revolve.scan_shard):
-    """Traces `poses` (an (N, 4) array, or (N, 5) with times) shard by shard on `client`'s workers and writes `output`,
+    """Traces `poses` (an (N, 4) array, or (N, 5) with times, as Lidar.scan takes them) shard by shard on `client`'s workers and writes `output`,
     which may not be the scene, the sensor or one of `inputs`. `trace` runs a shard on a worker
     (revolve.scan_shard: the scene and sensor loaded once per worker process)."""
     scene, sensor, output = os.path.abspath(scene), os.path.abspath(sensor), os.path.abspath(output)

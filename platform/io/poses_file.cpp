@@ -12,16 +12,17 @@ namespace revolve::io {
 namespace {
 
 // The columns a poses file may have, in the order messages list them.
-enum Column { kTime, kX, kY, kZ, kYaw, kColumns };
-constexpr const char* kColumnNames[kColumns] = {"time", "x", "y", "z", "yaw"};
-constexpr const char* kHeaderRule = "the columns are x, y and yaw, with z and time optional, each once (x,y,z,yaw)";
+enum Column { kTime, kX, kY, kZ, kRoll, kPitch, kYaw, kColumns };
+constexpr const char* kColumnNames[kColumns] = {"time", "x", "y", "z", "roll", "pitch", "yaw"};
+constexpr const char* kHeaderRule =
+    "the columns are x, y and yaw, with z, roll, pitch and time optional, each once (x,y,z,yaw)";
 
 }  // namespace
 
 std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view file) {
   std::vector<RobotPose> poses;
   // Where each column is in a line (-1: absent), from the header, which is therefore required.
-  int at[kColumns] = {-1, -1, -1, -1, -1};
+  int at[kColumns] = {-1, -1, -1, -1, -1, -1, -1};
   std::size_t columns = 0;
   bool headerSeen = false;
   std::size_t previousLine = 0;
@@ -76,6 +77,8 @@ std::vector<RobotPose> parsePosesCsv(std::string_view text, std::string_view fil
     pose.y = value(kY, false, true);
     pose.z = at[kZ] >= 0 ? value(kZ, true, true) : 0.0;
     pose.yaw = value(kYaw, false, false);
+    if (at[kRoll] >= 0) pose.roll = value(kRoll, false, false);
+    if (at[kPitch] >= 0) pose.pitch = value(kPitch, false, false);
     if (at[kTime] >= 0) {
       pose.time = value(kTime, false, false);
       if (const char* problem = poseTimeProblem(pose.time, poses.empty() ? std::nan("") : poses.back().time)) {

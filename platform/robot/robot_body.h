@@ -9,12 +9,30 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
 #include "geometry/vec3d.h"
+#include "io/poses_file.h"
 
 namespace revolve::robot {
 
 using app::Vec3d;
+
+// The cylinder stands upright: a pose that tilts the robot (roll or pitch, which a lidar's poses
+// may carry) has no clearance here. Throws std::invalid_argument naming the first such pose of
+// `poses` (numbered from 0, as `where` calls them: "POSES.csv: pose" or "poses[").
+inline void requireLevelPoses(std::span<const io::RobotPose> poses, const std::string& where) {
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    if (poses[i].level()) continue;
+    char angles[64];
+    std::snprintf(angles, sizeof angles, "roll = %.9g, pitch = %.9g", poses[i].roll, poses[i].pitch);
+    throw std::invalid_argument(where + " " + std::to_string(i) + " has " + angles +
+                                ": the clearance robot is an upright cylinder on level ground (roll and pitch 0)");
+  }
+}
 
 struct RobotBody {
   double x = 0, y = 0;        // the axis

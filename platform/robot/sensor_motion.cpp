@@ -28,13 +28,17 @@ SensorFrame SensorMotion::at(std::size_t sweep, double offset) const noexcept {
   const io::RobotPose& a = trajectory_[j];
   const io::RobotPose& b = trajectory_[j + 1];
   const double s = (time - a.time) / (b.time - a.time);
-  // The shorter turn from a's yaw to b's: their difference brought into [-pi, pi].
-  const double turn = std::remainder(b.yaw - a.yaw, 2 * std::numbers::pi);
+  // Each angle the shorter way from a's to b's: their difference brought into [-pi, pi].
+  const auto turned = [s](double from, double to) {
+    return from + s * std::remainder(to - from, 2 * std::numbers::pi);
+  };
   io::RobotPose between;
   between.x = a.x + s * (b.x - a.x);
   between.y = a.y + s * (b.y - a.y);
   between.z = a.z + s * (b.z - a.z);
-  between.yaw = a.yaw + s * turn;
+  between.yaw = turned(a.yaw, b.yaw);
+  between.roll = turned(a.roll, b.roll);
+  between.pitch = turned(a.pitch, b.pitch);
   return sensorFrame(mount_, mountRotation_, between);
 }
 

@@ -2,7 +2,8 @@
 // rotation_rate) fires column k of a sweep k / (samples x rate) seconds after the sweep starts;
 // when the poses carry times, sweep i starts at pose i's time and every beam is traced from the
 // sensor where the robot is at the beam's own firing time: the position interpolated linearly
-// between the two poses around that time, the yaw turned the shorter way between theirs. The path
+// between the two poses around that time, the yaw (and roll and pitch) each turned the shorter
+// way between theirs. The path
 // ends at the last pose: beams fired after its time are traced from it (the robot stops there).
 // A beam's frame depends only on the poses from its sweep's to the first after its firing time, so
 // a scan traced in parts gives the whole scan's beams bit for bit when each part's poses reach that

@@ -34,11 +34,17 @@ inline app::Matrix3d mountRotation(const io::SensorPose& mount) {
   return app::rotationAboutZ(mount.yaw) * (app::rotationAboutY(mount.pitch) * app::rotationAboutX(mount.roll));
 }
 
-// World from sensor: the robot at (x, y, z) turned by yaw about +Z, carrying the sensor at its
+// The robot's rotation: Rz(yaw) Ry(pitch) Rx(roll), the yaw alone on level ground.
+inline app::Matrix3d robotRotation(const io::RobotPose& pose) {
+  if (pose.level()) return app::rotationAboutZ(pose.yaw);
+  return app::rotationAboutZ(pose.yaw) * (app::rotationAboutY(pose.pitch) * app::rotationAboutX(pose.roll));
+}
+
+// World from sensor: the robot at (x, y, z) turned by robotRotation, carrying the sensor at its
 // mounting position turned by `mounted` (mountRotation(mount), made once by callers that place
 // many beams).
 inline SensorFrame sensorFrame(const io::SensorPose& mount, const app::Matrix3d& mounted, const io::RobotPose& pose) {
-  const app::Matrix3d robot = app::rotationAboutZ(pose.yaw);
+  const app::Matrix3d robot = robotRotation(pose);
   SensorFrame frame;
   frame.rotation = robot * mounted;
   const Vec3d position = robot.apply(Vec3d{mount.position[0], mount.position[1], mount.position[2]});

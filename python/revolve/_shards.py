@@ -52,10 +52,11 @@ def scan_shard(scene, sensor, poses, first_pose=0, threads=0, sweeps=None):
 
 def shard_poses(poses, first, count, lidar):
     """The poses a shard of `count` sweeps from pose `first` needs: poses[first : first + count] and,
-    for a sensor that moves during its sweeps (a rotation_rate or pattern times, and poses (N, 5) carrying times),
+    for a sensor that moves during its sweeps (a rotation_rate or pattern times, and poses (N, 5) or (N, 7)
+    carrying times),
     the poses after them up to the first after its last sweep's end, so that the shard's beams are
     traced from where the whole scan traces them (Lidar.scan's `sweeps` then counts the shard's own).
-    `poses`: an (N, 3), (N, 4) or (N, 5) array, or a POSES.csv path (read_poses)."""
+    `poses`: an (N, 3) to (N, 7) array as Lidar.scan takes, or a POSES.csv path (read_poses)."""
     if not isinstance(lidar, Lidar):
         raise TypeError(f"lidar: a {type(lidar).__name__}; expected a revolve.Lidar")
     if isinstance(poses, (str, bytes, os.PathLike)):
@@ -63,9 +64,9 @@ def shard_poses(poses, first, count, lidar):
     try:
         poses = np.asarray(poses, dtype=np.float64)
     except (TypeError, ValueError):
-        raise ValueError("poses: not an (N, 3), (N, 4) or (N, 5) array of numbers") from None
-    if poses.ndim != 2 or poses.shape[1] not in (3, 4, 5):
-        raise ValueError(f"poses: shape {poses.shape}; expected (N, 3), (N, 4) or (N, 5)")
+        raise ValueError("poses: not an (N, 3) to (N, 7) array of numbers") from None
+    if poses.ndim != 2 or poses.shape[1] not in (3, 4, 5, 6, 7):
+        raise ValueError(f"poses: shape {poses.shape}; expected (N, 3) to (N, 7), as Lidar.scan takes")
     for name, value in (("first", first), ("count", count)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
             raise TypeError(f"{name}: a {type(value).__name__}; expected a whole number")
@@ -74,7 +75,8 @@ def shard_poses(poses, first, count, lidar):
     if not 1 <= count <= len(poses) - first:
         raise ValueError(f"count = {count}: a shard from pose {first} holds 1 to {len(poses) - first} poses")
     end = first + count
-    if poses.shape[1] == 5 and lidar.sweep_duration > 0 and end < len(poses):
-        last_end = poses[end - 1, 4] + lidar.sweep_duration
-        end = min(len(poses), int(np.searchsorted(poses[:, 4], last_end, side="right")) + 1)
+    timed = poses.shape[1] in (5, 7)  # the time is the last column (Lidar.scan's layouts)
+    if timed and lidar.sweep_duration > 0 and end < len(poses):
+        last_end = poses[end - 1, -1] + lidar.sweep_duration
+        end = min(len(poses), int(np.searchsorted(poses[:, -1], last_end, side="right")) + 1)
     return poses[first:end]

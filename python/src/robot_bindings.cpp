@@ -79,25 +79,27 @@ std::shared_ptr<ToolScene> sceneOf(py::handle scene) {
 
 // Poses from a POSES.csv path (the tools' reader) or an (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or
 // (N, 5) [x, y, z, yaw, time] array, checked by the reader's rules.
+// The layouts of a poses array, by its number of columns (docs/python.md).
+constexpr const char* kPoseLayouts =
+    "(N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw], (N, 5) [x, y, z, yaw, time], (N, 6) [x, y, z, roll, pitch, yaw] or "
+    "(N, 7) [x, y, z, roll, pitch, yaw, time]";
+
 std::vector<io::RobotPose> posesOf(py::handle poses) {
   if (py::isinstance<py::str>(poses) || py::isinstance<py::bytes>(poses) || py::hasattr(poses, "__fspath__")) {
     return io::readPosesCsv(pathArgument(poses, "poses"));
   }
-  const py::array array =
-      arrayArgument(poses, "poses", "an (N, 3), (N, 4) or (N, 5) array of poses, or a POSES.csv path");
+  const py::array array = arrayArgument(poses, "poses", "an (N, 3) to (N, 7) array of poses, or a POSES.csv path");
   const py::ssize_t columns = array.ndim() == 2 ? array.shape(1) : 0;
-  if (columns != 3 && columns != 4 && columns != 5) {
-    throw py::value_error("poses: shape " + shapeText(array) +
-                          "; expected (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or (N, 5) [x, y, z, yaw, time], "
-                          "or a POSES.csv path");
+  if (columns < 3 || columns > 7) {
+    throw py::value_error("poses: shape " + shapeText(array) + "; expected " + kPoseLayouts + ", or a POSES.csv path");
   }
   const py::array_t<double> values = copiedMatrix(array, "poses", -1, columns, 1);
   std::vector<io::RobotPose> result(std::size_t(values.shape(0)));
-  const bool withZ = columns >= 4, timed = columns == 5;
-  const py::ssize_t yawColumn = withZ ? 3 : 2;
+  const bool withZ = columns >= 4, tilted = columns >= 6, timed = columns == 5 || columns == 7;
+  const py::ssize_t yawColumn = tilted ? 5 : withZ ? 3 : 2, timeColumn = columns - 1;
   const char* names[3] = {"x", "y", "z"};
   for (std::size_t i = 0; i < result.size(); ++i) {
-    for (py::ssize_t c = 0; c < yawColumn; ++c) {  // the positions; yaw may be any finite angle
+    for (py::ssize_t c = 0; c < (withZ ? 3 : 2); ++c) {  // the positions; angles may be any finite value
       if (!(std::abs(values.at(i, c)) <= app::kMaxWorldCoordinate)) {
         char text[32];
         std::snprintf(text, sizeof text, "%.9g", values.at(i, c));
@@ -109,15 +111,17 @@ std::vector<io::RobotPose> posesOf(py::handle poses) {
     p.x = values.at(i, 0), p.y = values.at(i, 1);
     p.z = withZ ? values.at(i, 2) : 0.0;
     p.yaw = values.at(i, yawColumn);
+    if (tilted) p.roll = values.at(i, 3), p.pitch = values.at(i, 4);
     if (timed) {
-      p.time = values.at(i, 4);
+      p.time = values.at(i, timeColumn);
       if (const char* problem = io::poseTimeProblem(p.time, i == 0 ? std::nan("") : result[i - 1].time)) {
+        const std::string column = std::to_string(timeColumn);
         char text[32];
         std::snprintf(text, sizeof text, "%.17g", p.time);
-        std::string message = "poses[" + std::to_string(i) + ", 4]: time = " + text + " " + problem;
+        std::string message = "poses[" + std::to_string(i) + ", " + column + "]: time = " + text + " " + problem;
         if (i > 0) {
           std::snprintf(text, sizeof text, "%.17g", result[i - 1].time);
-          message += std::string(" (poses[") + std::to_string(i - 1) + ", 4] = " + text + ")";
+          message += std::string(" (poses[") + std::to_string(i - 1) + ", " + column + "] = " + text + ")";
         }
         throw py::value_error(message);
       }
@@ -126,13 +130,18 @@ std::vector<io::RobotPose> posesOf(py::handle poses) {
   return result;
 }
 
-// (N, 4) [x, y, z, yaw], or (N, 5) with the time when the poses carry it.
+// Poses as read_poses returns them: (N, 4) [x, y, z, yaw], with roll and pitch (N, 6) [x, y, z,
+// roll, pitch, yaw] where any pose is tilted, and the time last where the poses carry one.
 py::array_t<double> posesArray(const std::vector<io::RobotPose>& poses) {
   const bool timed = !poses.empty() && poses.front().timed();
-  py::array_t<double> array(std::vector<py::ssize_t>{py::ssize_t(poses.size()), timed ? 5 : 4});
+  const bool tilted = std::any_of(poses.begin(), poses.end(), [](const io::RobotPose& p) { return !p.level(); });
+  const py::ssize_t columns = (tilted ? 6 : 4) + (timed ? 1 : 0);
+  py::array_t<double> array(std::vector<py::ssize_t>{py::ssize_t(poses.size()), columns});
   double* out = array.mutable_data();
   for (const io::RobotPose& p : poses) {
-    *out++ = p.x, *out++ = p.y, *out++ = p.z, *out++ = p.yaw;
+    *out++ = p.x, *out++ = p.y, *out++ = p.z;
+    if (tilted) *out++ = p.roll, *out++ = p.pitch;
+    *out++ = p.yaw;
     if (timed) *out++ = p.time;
   }
   return array;
@@ -400,6 +409,11 @@ py::dict cylinderClearance(py::handle sceneObject, py::handle posesObject, py::h
   }
   if (ground && !std::isfinite(*ground)) throw py::value_error("ground: must be a finite height (or None)");
   const std::vector<io::RobotPose> poses = posesOf(posesObject);
+  try {
+    robot::requireLevelPoses(poses, "poses: pose");
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(error.what());
+  }
   const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
   const robot::ClearanceMap& map = scene->clearanceMap(ground.value_or(-INFINITY));
   std::vector<robot::SceneClearance> results(poses.size());
@@ -468,8 +482,9 @@ fires (docs/robot.md).)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
            py::arg("first_pose") = py::int_(0), py::arg("sweeps") = py::none(),
-           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw] or (N, 5) "
-           "[x, y, z, yaw, time], or a POSES.csv path; first_pose: the number of poses[0] in a scan traced in parts "
+           "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw], (N, 5) "
+           "[x, y, z, yaw, time], (N, 6) [x, y, z, roll, pitch, yaw] or (N, 7) [x, y, z, roll, pitch, yaw, time], or a "
+           "POSES.csv path; first_pose: the number of poses[0] in a scan traced in parts "
            "(its noise is that pose's); sweeps: trace the sweeps of poses[:sweeps] only (default all), the poses after "
            "them the rest of the path a moving sensor follows (a part's poses reach past its last sweep's end: "
            "shard_poses).")
@@ -539,7 +554,8 @@ nearest obstacle's surface), exact (bool: false where the clearance is a lower b
   m.def(
       "read_poses", [](py::handle path) { return posesArray(io::readPosesCsv(pathArgument(path, "path"))); },
       py::arg("path"),
-      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw, or (N, 5) with the time "
+      "A POSES.csv file as revolve-lidar reads it: an (N, 4) float64 array of x, y, z, yaw, (N, 6) of x, y, z, roll, "
+      "pitch, yaw where a pose is tilted, either with the time as a last column "
       "when the file has a time column.");
 }
 

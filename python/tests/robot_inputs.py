@@ -44,10 +44,10 @@ def timed_corridor_poses(count, interval=0.04):
 
 
 def write_poses(path, poses):
-    """(N, 4) poses, or (N, 5) with times, as POSES.csv."""
-    timed = poses.shape[1] == 5
+    """(N, 4) poses, (N, 5) with times, (N, 6) with roll and pitch or (N, 7) with both, as POSES.csv."""
+    header = {4: "x,y,z,yaw", 5: "x,y,z,yaw,time", 6: "x,y,z,roll,pitch,yaw", 7: "x,y,z,roll,pitch,yaw,time"}
     with open(path, "w") as out:
-        out.write("x,y,z,yaw,time\n" if timed else "x,y,z,yaw\n")
+        out.write(header[poses.shape[1]] + "\n")
         for pose in poses:
             out.write(",".join(repr(float(v)) for v in pose) + "\n")  # repr: exact, shortest
     return path

@@ -144,3 +144,27 @@ def test_open3d_reads_every_field(dual):
         got = cloud.point[field].numpy().ravel()
         assert got.dtype == dtype, field
         assert np.array_equal(got, expected[field], equal_nan=True), field
+
+
+def test_tilted_poses_are_revolve_lidars_bit_for_bit(tmp_path):
+    """Roll and pitch columns (a robot on a ramp, a drone): POSES.csv and (N, 7) arrays give the same scan."""
+    from conftest import SOURCE_DIR
+
+    scene = SOURCE_DIR / "scenes" / "robot_world.json"
+    sensor = write_sensor(tmp_path / "sensor.json", MULTI_RETURN_SENSOR)
+    timed = timed_corridor_poses(4)  # x, y, z, yaw, time
+    tilted = np.column_stack([timed[:, :3], [0.0, 0.05, -0.1, 0.02], [0.1, -0.05, 0.0, 0.2], timed[:, 3:]])
+    path = write_poses(tmp_path / "tilted.csv", tilted)
+    cli = tmp_path / "cli.pcd"
+    run_tool("revolve-lidar", scene, "--sensor", sensor, "--poses", path, "-o", cli, "--pcd-data", "binary")
+    poses = revolve.read_poses(path)
+    assert poses.shape == (4, 7) and np.array_equal(poses, tilted)
+    lidar = revolve.Lidar(sensor)
+    scan = lidar.scan(scene, poses)
+    expected, _ = read_binary_pcd(cli)
+    for k, axis in enumerate("xyz"):
+        assert np.array_equal(scan["points"][..., k].ravel(), expected[axis], equal_nan=True)
+    level = lidar.scan(scene, timed)
+    assert not np.array_equal(level["ranges"], scan["ranges"], equal_nan=True)  # the tilt is in the scan
+    with pytest.raises(ValueError, match=r"pose 0 has roll = 0, pitch = 0.1: the clearance robot is an upright cylinder"):
+        revolve.cylinder_clearance(scene, poses, 0.3, 0, 1)

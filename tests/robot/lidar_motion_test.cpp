@@ -118,6 +118,54 @@ TEST(LidarMotionTest, TheFrameMovesLinearlyTurnsTheShorterWayAndStopsAtTheLastPo
   EXPECT_FALSE(robot::SensorMotion(mount, std::span(path.data(), 1)).moving());
 }
 
+// A robot tilted by roll and pitch (R = Rz(yaw) Ry(pitch) Rx(roll), ROS's fixed axes): a level
+// sensor h above the floor on it sees the floor along its forward beam at h / sin(pitch) (positive
+// pitch turns +X down) and along its left beam at h / sin(-roll) (positive roll turns +Y up); and
+// with timed poses the pitch, like the yaw, turns linearly between the poses.
+TEST(LidarMotionTest, ATiltedRobotsBeamsFollowItsRollAndPitch) {
+  const double h = 0.5;
+  const scene::EmbreeScene built(
+      testing::sceneOf({}, {{Vec3d{-50, -50, 0}, Vec3d{50, -50, 0}, Vec3d{50, 50, 0}, Vec3d{-50, 50, 0}}}), {});
+  io::SensorDescription s = spinningSensor(2, 0, std::numbers::pi / 2, 0);  // forward, then left
+  s.rangeMax = 1000;
+  io::RobotPose pose;
+  pose.x = 3, pose.y = -2, pose.yaw = 0.7;
+  pose.pitch = 0.3;
+  pose.roll = -0.2;
+  const io::ScanTable scan = robot::Lidar(built, s).scan(std::vector<io::RobotPose>{pose});
+  // The beams' directions in the world, by hand: Rz(yaw) Ry(pitch) Rx(roll) applied to +X and +Y.
+  const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw), cp = std::cos(pose.pitch), sp = std::sin(pose.pitch);
+  const double cr = std::cos(pose.roll), sr = std::sin(pose.roll);
+  const Vec3d forward{cy * cp, sy * cp, -sp};
+  const Vec3d left{cy * sp * sr - sy * cr, sy * sp * sr + cy * cr, cp * sr};
+  for (const auto& [column, d] : {std::pair{0, forward}, std::pair{1, left}}) {
+    SCOPED_TRACE(column);
+    const io::BeamReturn& r = scan.at(0, 0, std::size_t(column));
+    // The sensor sits h up the robot's own z axis: the robot's position plus R (0, 0, h).
+    const Vec3d origin{3 + h * (cy * sp * cr + sy * sr), -2 + h * (sy * sp * cr - cy * sr), h * cp * cr};
+    const double range = -origin[2] / d[2];
+    ASSERT_FALSE(std::isinf(r.range));
+    EXPECT_NEAR(r.range, range, 0x1p-20 * (range + 4));
+    EXPECT_NEAR(r.x, origin[0] + range * d[0], 0x1p-20 * (range + 4));
+    EXPECT_NEAR(r.y, origin[1] + range * d[1], 0x1p-20 * (range + 4));
+    EXPECT_NEAR(r.z, 0, 0x1p-20 * (range + 4));
+  }
+  // Moving: the pitch from 0.1 to 0.3 and x from 0 to 1 in 1 s; half way, the frame is pitched
+  // by 0.2 at x = 0.5.
+  io::RobotPose a, b;
+  a.time = 0, a.pitch = 0.1;
+  b.time = 1, b.pitch = 0.3, b.x = 1;
+  io::SensorPose mount;
+  mount.position = {0, 0, h};
+  const robot::SensorMotion motion(mount, std::vector<io::RobotPose>{a, b});
+  const robot::SensorFrame half = motion.at(0, 0.5);
+  const Vec3d ahead = half.rotate({1, 0, 0});
+  EXPECT_NEAR(ahead[0], std::cos(0.2), 1e-15);
+  EXPECT_NEAR(ahead[2], -std::sin(0.2), 1e-15);
+  EXPECT_NEAR(half.origin[0], 0.5 + h * std::sin(0.2), 1e-15);
+  EXPECT_NEAR(half.origin[2], h * std::cos(0.2), 1e-15);
+}
+
 TEST(LidarMotionTest, BeamsCarryTheirColumnsTimeAndWithoutTimedPosesTheScanIsAtRest) {
   const int samples = 360;
   const double rate = 20;

@@ -1,4 +1,4 @@
-// The poses reader: its headers (z and time optional, any order), an empty z, times, and each
+// The poses reader: its headers (z, roll, pitch and time optional, any order), an empty z, times, and each
 // rule's error naming the file and line.
 #include "io/poses_file.h"
 #include "io/text_files.h"
@@ -41,6 +41,19 @@ TEST(PosesFileTest, ReadsATimeColumnInAnyOrder) {
   EXPECT_FALSE(parsePosesCsv("x,y,yaw\n1,2,0\n", "p.csv")[0].timed());
 }
 
+TEST(PosesFileTest, ReadsRollAndPitchInAnyOrder) {
+  const std::vector<RobotPose> poses = parsePosesCsv("pitch,x,y,roll,yaw\n0.1,1,2,-0.2,0.3\n", "p.csv");
+  ASSERT_EQ(poses.size(), 1u);
+  EXPECT_EQ(poses[0].pitch, 0.1);
+  EXPECT_EQ(poses[0].roll, -0.2);
+  EXPECT_EQ(poses[0].yaw, 0.3);
+  EXPECT_FALSE(poses[0].level());
+  const RobotPose level = parsePosesCsv("x,y,yaw\n1,2,0\n", "p.csv")[0];
+  EXPECT_TRUE(level.level());  // no roll or pitch column: 0, level ground
+  EXPECT_THROW(parsePosesCsv("x,y,yaw,roll,roll\n1,2,0,0,0\n", "p.csv"), InputError);  // each once
+  EXPECT_THROW(parsePosesCsv("x,y,yaw,pitch\n1,2,0,inf\n", "p.csv"), InputError);      // finite
+}
+
 struct BadPoses {
   const char* name;
   std::string text;
@@ -53,7 +66,7 @@ TEST(PosesFileTest, EachRuleNamesTheLineAndTheRule) {
       BadPoses{"Empty", "\n\n", "p.csv: empty: expected the header"},
       BadPoses{"NoHeader", "1,2,0,0\n",
                "p.csv:1: header \"1,2,0,0\": column 1 \"1\" is not a pose column; the columns are x, y and yaw, with "
-               "z and time optional, each once (x,y,z,yaw)"},
+               "z, roll, pitch and time optional, each once (x,y,z,yaw)"},
       BadPoses{"WrongHeader", "x,y,theta\n1,2,0\n", "p.csv:1: header \"x,y,theta\": column 3 \"theta\" is not a pose"},
       BadPoses{"RepeatedColumn", "x,y,yaw,x\n1,2,0,1\n", "p.csv:1: header \"x,y,yaw,x\": column 4 \"x\" is repeated"},
       BadPoses{"NoYaw", "time,x,y\n0,1,2\n", "p.csv:1: header \"time,x,y\" lacks x, y or yaw"},

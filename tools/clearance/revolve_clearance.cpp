@@ -60,6 +60,7 @@ void run(const Options& options) {
     std::fprintf(stderr, "revolve-clearance: warning: %s\n", warning.c_str());
   }
   const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
+  robot::requireLevelPoses(poses, options.poses + ": pose");  // one message, exit 1 (app::runTool)
   io::OutputSet outputs;
   outputs.addInput("the scene file", options.scene);
   for (const io::SceneProfile& profile : description.profiles)
