@@ -1,6 +1,6 @@
 // Range scans as files other tools read: a LaserScan-shaped CSV table and an organised PCD v0.7
 // point cloud (PCL, Open3D, CloudCompare), ASCII or binary, chosen by the output's extension and
-// an option. A scan is written as it is traced, block by block in beam order, so memory does not
+// an option. A scan is written as it is traced, block by block in point order, so memory does not
 // grow with the number of poses; the file goes to a temporary renamed into place (output_set.h),
 // so it is whole or absent.
 #pragma once

@@ -91,6 +91,16 @@ void readReturns(const Reader& in, const Json& root, SensorDescription& sensor) 
     }
     sensor.maxReturns = in.integerIn(*v, "max_returns", 1, kMaxReturns);
   }
+  // A footprint needs both: a cone and more than one ray across it.
+  if (sensor.divergence > 0 && sensor.subrays == 1) {
+    in.fail("subrays", "1 with divergence = " + numberText(sensor.divergence) +
+                           ": one sub-ray is the beam's axis alone, so the divergence would do nothing; sample the "
+                           "cone with subrays > 1, or set divergence 0");
+  }
+  if (sensor.divergence == 0 && sensor.subrays > 1) {
+    in.fail("subrays", std::to_string(sensor.subrays) +
+                           " with divergence 0: every sub-ray would be the beam's axis; give the cone's divergence");
+  }
   if (const Json* v = in.optional(root, "return_separation")) {
     sensor.returnSeparation = in.number(*v, "return_separation");
     if (!(sensor.returnSeparation > 0))

@@ -43,6 +43,10 @@ std::uint64_t echoSeed(std::uint64_t seed, std::size_t echo) noexcept {
   return echo == 0 ? seed : app::mix64(seed ^ app::mix64(0x9e3779b97f4a7c15ULL + echo));
 }
 
+// The intensity noise's seed: a stream apart from the range noise's even where the two seeds are
+// equal (both default to 0), so that a return's range and intensity errors are independent.
+std::uint64_t intensitySeed(std::uint64_t seed) noexcept { return app::mix64(seed ^ 0x696e74656e736974ULL); }
+
 }  // namespace
 
 void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int threads, double* tracingSeconds,
@@ -80,7 +84,8 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
     if (sensor_.resolution > 0) range = std::round(range / sensor_.resolution) * sensor_.resolution;
     if (!(range >= sensor_.rangeMin && range <= sensor_.rangeMax)) return false;
     if (sensor_.intensityNoiseStddev > 0) {
-      const double z = standardNormal(echoSeed(sensor_.intensityNoiseSeed, echo), firstPose + pose, ring, column);
+      const double z =
+          standardNormal(echoSeed(intensitySeed(sensor_.intensityNoiseSeed), echo), firstPose + pose, ring, column);
       e.intensity = std::max(0.0, e.intensity * (1 + sensor_.intensityNoiseStddev * z));
     }
     e.range = range;
@@ -169,6 +174,15 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
           Echo e = measured[g];
           if (measure(e, g, pose, ring, column)) measured[returned++] = e;  // returned <= g: in place
         }
+        // Noise larger than the separation can swap neighbouring returns: reported in the order
+        // of their measured ranges. Insertion sort: stable (equal ranges keep their traced order),
+        // in place (std::stable_sort may allocate), and the returns are few and nearly in order.
+        for (std::size_t i = 1; i < returned; ++i) {
+          const Echo e = measured[i];
+          std::size_t j = i;
+          for (; j > 0 && e.range < measured[j - 1].range; --j) measured[j] = measured[j - 1];
+          measured[j] = e;
+        }
       }
       // The reported returns: the first `layers` (nearest first), or the last or strongest one.
       std::size_t from = 0;
@@ -240,10 +254,10 @@ void Lidar::scan(std::span<const io::RobotPose> poses, const Sink& sink, int thr
   };
   if (total == 0) return;
 
-  // Beams a block: any number for one layer; whole poses for several, so that a block's points
-  // (a pose's layers one after the other) are consecutive.
+  // Beams a block: kBlockBeams points' worth; for one layer any such run, for several whole poses,
+  // so that a block's points (a pose's layers one after the other) are consecutive.
   const std::uint64_t blockBeams =
-      layers == 1 ? kBlockBeams : std::max<std::uint64_t>(1, kBlockBeams / perPose) * perPose;
+      layers == 1 ? kBlockBeams : std::max<std::uint64_t>(1, kBlockBeams / (perPose * layers)) * perPose;
   tbb::task_arena& arena = app::threadArena(threads > 0 ? threads : 0);
   arena.execute([&] {
     const std::size_t firstCount = std::size_t(std::min<std::uint64_t>(blockBeams, total));

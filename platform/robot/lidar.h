@@ -30,7 +30,7 @@ class Lidar {
   // time: `first` is the number of the block's first point. A sensor reporting several returns a
   // beam (layers) hands over whole poses.
   using Sink = std::function<void(std::uint64_t first, std::span<const io::BeamReturn> points)>;
-  // Beams traced at a time: enough work for every thread, little memory (two blocks in flight); a
+  // Points traced at a time: enough work for every thread, little memory (two blocks in flight); a
   // sensor of several layers traces whole poses, as many as fit, at least one.
   static constexpr std::size_t kBlockBeams = std::size_t{1} << 16;
 

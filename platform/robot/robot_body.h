@@ -29,7 +29,7 @@ inline void requireLevelPoses(std::span<const io::RobotPose> poses, const std::s
     if (poses[i].level()) continue;
     char angles[64];
     std::snprintf(angles, sizeof angles, "roll = %.9g, pitch = %.9g", poses[i].roll, poses[i].pitch);
-    throw std::invalid_argument(where + " " + std::to_string(i) + " has " + angles +
+    throw std::invalid_argument(where + " " + std::to_string(i) + " (counting from 0) has " + angles +
                                 ": the clearance robot is an upright cylinder on level ground (roll and pitch 0)");
   }
 }

@@ -33,7 +33,8 @@ std::string pathArgument(py::handle value, const char* name) {
   py::object text;
   try {
     text = py::module_::import("os").attr("fsdecode")(value);
-  } catch (py::error_already_set& error) {  // an __fspath__ that returned neither str nor bytes, say
+  } catch (py::error_already_set& error) {       // an __fspath__ that returned neither str nor bytes, say
+    if (!error.matches(PyExc_Exception)) throw;  // a signal handler's SystemExit or KeyboardInterrupt
     throw py::type_error(std::string(name) + ": not a path: " + std::string(py::str(error.value())));
   }
   const std::string path = py::str(text);

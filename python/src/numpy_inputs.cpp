@@ -22,6 +22,7 @@ py::array arrayArgument(py::handle object, const char* name, const std::string& 
     try {
       return py::module_::import("numpy").attr("asarray")(object);
     } catch (py::error_already_set& error) {
+      if (!error.matches(PyExc_Exception)) throw;  // a signal handler's SystemExit or KeyboardInterrupt
       const bool ragged = error.matches(PyExc_ValueError);
       throw py::value_error(std::string(name) + ": " +
                             (ragged ? "a ragged list (its rows differ in length)" : "a list numpy makes no array of") +

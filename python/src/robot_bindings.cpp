@@ -353,7 +353,9 @@ struct ScanFile {
     const auto converted = [&](auto type, const char* key) {
       try {
         return alignedArray<decltype(type)>(array(key));
-      } catch (py::error_already_set&) {  // values numpy cannot cast (strings, objects)
+      } catch (py::error_already_set& error) {  // values numpy cannot cast (strings, objects)
+        // Anything else (a signal handler's SystemExit or KeyboardInterrupt raised meanwhile) goes on.
+        if (!error.matches(PyExc_TypeError) && !error.matches(PyExc_ValueError)) throw;
         throw py::value_error(path + ": scan[\"" + key + "\"] holds no numbers; " + expected + " is expected");
       }
     };
@@ -475,8 +477,9 @@ world frame, nan for no return), intensity (float32, reflectivity |cos| / range^
 for no return), time (float32, seconds from the sweep's start to the beam's firing: 0 without a
 rotation_rate), rings (uint16), return (uint8: the return's index, nearest first) and ids (int32:
 the scene's object index, quads after the objects, -1 for no return), bit for bit revolve-lidar's.
-A sensor with returns "all" gives (poses, max_returns, rings, azimuths): one layer per return, nan
-where a beam has fewer; a beam pattern one ring of all its beams. With a rotation_rate (or pattern
+A sensor reporting several returns a beam (returns "all", max_returns > 1) gives (poses,
+max_returns, rings, azimuths): one layer per return, empty (inf range, nan point) where a beam has
+fewer; a beam pattern one ring of all its beams. With a rotation_rate (or pattern
 times) and poses that carry times, each beam is traced from where the moving sensor is when it
 fires (docs/robot.md).)")
       .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))

@@ -191,7 +191,7 @@ def test_scene_files_sensors_and_poses():
     with pytest.raises(ValueError, match=r"poses: shape \(2, 8\); expected \(N, 3\) \[x, y, yaw\], \(N, 4\)"):
         revolve.cylinder_clearance(__file__, np.zeros((2, 8)), 0.3, 0, 1)
     # (N, 6) and (N, 7): roll and pitch before the yaw, the time last; the clearance robot stands upright.
-    with pytest.raises(ValueError, match=r"poses: pose 1 has roll = 0.25, pitch = 0: the clearance robot is an upright cylinder"):
+    with pytest.raises(ValueError, match=r"poses: pose 1 \(counting from 0\) has roll = 0.25, pitch = 0: the clearance robot is an upright cylinder"):
         revolve.cylinder_clearance(__file__, np.array([[0, 0, 0, 0, 0, 0], [0, 0, 0, 0.25, 0, 0]]), 0.3, 0, 1)
     with pytest.raises(ValueError, match=r"poses\[1, 6\]: time = 0 does not increase"):
         revolve.cylinder_clearance(__file__, np.zeros((2, 7)), 0.3, 0, 1)

@@ -166,5 +166,18 @@ def test_tilted_poses_are_revolve_lidars_bit_for_bit(tmp_path):
         assert np.array_equal(scan["points"][..., k].ravel(), expected[axis], equal_nan=True)
     level = lidar.scan(scene, timed)
     assert not np.array_equal(level["ranges"], scan["ranges"], equal_nan=True)  # the tilt is in the scan
-    with pytest.raises(ValueError, match=r"pose 0 has roll = 0, pitch = 0.1: the clearance robot is an upright cylinder"):
+    with pytest.raises(ValueError, match=r"pose 0 \(counting from 0\) has roll = 0, pitch = 0.1: the clearance robot is an upright cylinder"):
         revolve.cylinder_clearance(scene, poses, 0.3, 0, 1)
+
+
+def test_a_scan_file_refuses_a_scan_of_another_shape(dual, tmp_path):
+    """A ScanFile for the two-layer sensor takes (P, 2, 8, 360) scans only: a one-layer scan of the same
+    beams is refused naming the shape expected, and nothing is written."""
+    lidar = revolve.Lidar(dual["sensor"])
+    single = revolve.Lidar({k: v for k, v in MULTI_RETURN_SENSOR.items() if k not in ("returns", "max_returns")})
+    out = tmp_path / "scan.pcd"
+    scan_file = revolve.ScanFile(out, lidar, 1)
+    with pytest.raises(ValueError, match=r"ranges \(P, 2, 8, 360\)"):
+        scan_file.write(0, single.scan(dual["scene"], dual["poses"][:1]))
+    del scan_file
+    assert not list(tmp_path.iterdir())

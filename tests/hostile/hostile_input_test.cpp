@@ -101,9 +101,10 @@ TEST(EmbreeContract, RaysAtTheLimitsStayWithinEmbreesRange) {
   std::istringstream fields(lines[3]);
   std::vector<std::string> f;
   for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
-  ASSERT_GE(f.size(), 5u) << lines[3];
-  ASSERT_NE(f[4], "inf") << "the beam at the object missed it";
-  const double range = std::stod(f[4]);
+  ASSERT_EQ(lines[0].rfind("pose,ring,return,azimuth,elevation,range,", 0), 0u) << lines[0];
+  ASSERT_GE(f.size(), 6u) << lines[3];
+  ASSERT_NE(f[5], "inf") << "the beam at the object missed it";
+  const double range = std::stod(f[5]);
   EXPECT_LE(range, 2.18e12);
   EXPECT_GE(range, 2.18e12 - std::sqrt(3.0) * 1.52587890625e-05 * 1e12);
 }
@@ -133,14 +134,15 @@ TEST(EmbreeContract, ATinyRotationAxisTurnsTheObjectAsTheUnitAxisDoes) {
   std::istringstream rows(unit);
   std::string row;
   std::getline(rows, row);  // header
+  ASSERT_EQ(row.rfind("pose,ring,return,azimuth,elevation,range,", 0), 0u) << row;
   std::getline(rows, row);  // beam 0, at -pi/2
   std::getline(rows, row);  // beam 1, along +x
   std::vector<std::string> f;
   std::istringstream fields(row);
   for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
-  ASSERT_GE(f.size(), 5u) << row;
-  ASSERT_NE(f[4], "inf") << "the turned pole vanished";
-  EXPECT_NEAR(std::stod(f[4]), 2.0, 1e-6);
+  ASSERT_GE(f.size(), 6u) << row;
+  ASSERT_NE(f[5], "inf") << "the turned pole vanished";
+  EXPECT_NEAR(std::stod(f[5]), 2.0, 1e-6);
 }
 
 // Directions of 2^-100 (far below float's squares) give the same camera, sun and image as unit

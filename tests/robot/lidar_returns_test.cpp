@@ -178,6 +178,55 @@ TEST(LidarReturnsTest, ThreadCountsGiveTheSameReturns) {
   EXPECT_GT(second, 0u);  // beams across the pole's edges have second returns
 }
 
+// A scan of several layers crosses blocks at whole poses: 150 poses of 903 beams x 3 layers take
+// several blocks (robot/lidar.h), and each pose's points are those of the pose scanned alone (its
+// noise drawn as pose i's), bit for bit; the returns come nearest first even where the noise
+// (larger than the separation) swaps what was traced.
+TEST(LidarReturnsTest, BlocksOfSeveralLayersHoldWholePosesAndReturnsComeNearestFirst) {
+  io::SensorDescription s = oneBeam(0, io::ReturnMode::all, 4, 0.04);
+  s.horizontal = {301, -0.7, 0.7};
+  s.elevations = {-0.05, 0.0, 0.05};
+  s.planar = false;
+  s.maxReturns = 3;
+  s.noiseStddev = 0.3;  // three times the separation
+  s.noiseSeed = 11;
+  s.returnSeparation = 0.1;
+  const scene::EmbreeScene built(poleBeforeWall(), {});
+  const robot::Lidar lidar(built, s);
+  std::vector<io::RobotPose> poses(150);
+  for (std::size_t i = 0; i < poses.size(); ++i) poses[i].y = -0.3 + 0.004 * double(i);
+  ASSERT_GT(poses.size() * 903 * 3, 2 * robot::Lidar::kBlockBeams);
+  const io::ScanTable whole = lidar.scan(poses, 2);
+  const std::size_t perPose = 903 * 3;
+  ASSERT_EQ(whole.points.size(), poses.size() * perPose);
+  std::size_t second = 0;
+  for (std::size_t i = 0; i < poses.size(); i += 7) {
+    std::vector<io::BeamReturn> alone(perPose);
+    lidar.scan(
+        std::span(poses.data() + i, 1),
+        [&](std::uint64_t first, std::span<const io::BeamReturn> points) {
+          std::copy(points.begin(), points.end(), alone.begin() + std::ptrdiff_t(first));
+        },
+        1, nullptr, i);
+    ASSERT_EQ(std::memcmp(alone.data(), whole.points.data() + i * perPose, perPose * sizeof(io::BeamReturn)), 0)
+        << "pose " << i;
+  }
+  for (std::size_t p = 0; p < poses.size(); ++p) {
+    for (std::size_t beam = 0; beam < 903; ++beam) {
+      const std::size_t ring = beam / 301, column = beam % 301;
+      for (std::size_t layer = 1; layer < 3; ++layer) {
+        const io::BeamReturn& nearer = whole.at(p, ring, column, layer - 1);
+        const io::BeamReturn& farther = whole.at(p, ring, column, layer);
+        if (std::isinf(farther.range)) continue;
+        ++second;
+        EXPECT_FALSE(std::isinf(nearer.range));
+        EXPECT_LE(nearer.range, farther.range);
+      }
+    }
+  }
+  EXPECT_GT(second, 100u);
+}
+
 // The grouping rule on its own: neighbours in range further apart than the separation start a new
 // return; a return has its nearest hit's range and object and its hits' light over the sub-rays.
 TEST(LidarReturnsTest, HitsAreGroupedByGapsInRange) {

@@ -305,7 +305,8 @@ std::vector<BadRun> badClearanceRuns() {
       {"SceneBad", kClearanceArgs, "scene.json: not valid JSON", "{"},
       {"OutputExtension", pcd, R"(out.pcd: unsupported extension ".pcd"; the clearance table is a .csv)"},
       {"TiltedPose", kClearanceArgs,
-       "poses.csv: pose 1 has roll = 0, pitch = 0.1: the clearance robot is an upright cylinder on level ground",
+       "poses.csv: pose 1 (counting from 0) has roll = 0, pitch = 0.1: the clearance robot is an upright cylinder on "
+       "level ground",
        kScene, kSensor, "x,y,yaw,pitch\n0,0,0,0\n1,0,0,0.1\n"},
   };
 }

@@ -96,6 +96,13 @@ struct BadSensor {
   std::string expected;  // a substring of the message
 };
 
+std::string replacedIn(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
 std::string with(const std::string& from, const std::string& to) {
   std::string text = kPlanar;
   const std::size_t at = text.find(from);
@@ -184,6 +191,22 @@ TEST(SensorFileTest, EachRuleNamesTheKeyAndTheRule) {
                 R"(max_returns: applies to "returns": "all" only; returns is "last")"},
       BadSensor{"SeparationZero", with(R"("rotation_rate": 10)", R"("return_separation": 0)"),
                 "return_separation: 0 is not above 0"},
+      BadSensor{"MaxReturnsTooMany", with(R"("rotation_rate": 10)", R"("returns": "all", "max_returns": 256)"),
+                "max_returns: 256 is out of range: must lie in [1, 255]"},
+      BadSensor{"ReturnsNotAString", with(R"("rotation_rate": 10)", R"("returns": 2)"),
+                "returns: expected a string, found number"},
+      BadSensor{"DivergenceWithOneSubray", with(R"("rotation_rate": 10)", R"("divergence": 0.003)"),
+                "subrays: 1 with divergence = 0.003: one sub-ray is the beam's axis alone"},
+      BadSensor{"SubraysWithoutDivergence", with(R"("rotation_rate": 10)", R"("subrays": 8)"),
+                "subrays: 8 with divergence 0: every sub-ray would be the beam's axis"},
+      // 2^20 beams x 17 returns (max_returns' default of 2 would fit): beyond 2^24 points a pose.
+      BadSensor{"TooManyPointsAPose",
+                replacedIn(with(R"("samples": 5)", R"("samples": 1048576)"), R"("rotation_rate": 10)",
+                           R"("returns": "all", "max_returns": 17)"),
+                "max_returns: 1048576 beams x 17 returns = 17825792 points a pose; at most 16777216"},
+      BadSensor{"PatternPathEmpty",
+                R"({"pose": {"position": [0, 0, 0]}, "pattern": "", "range": {"min": 0, "max": 5}})",
+                "pattern: the path is empty"},
       BadSensor{"PatternWithFans", with(R"("rotation_rate": 10)", R"("pattern": "beams.csv")"),
                 R"(horizontal: give either "pattern" (a beam table) or the fans)"},
       BadSensor{

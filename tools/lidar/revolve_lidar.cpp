@@ -103,7 +103,9 @@ void run(const Options& options, bool pcdDataGiven) {
   outputs.commit();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (built.refusedRays() > 0) {
-    std::fprintf(stderr, "revolve-lidar: warning: %s: %llu beams fell outside Embree's range and were not traced\n",
+    std::fprintf(stderr,
+                 "revolve-lidar: warning: %s: %llu rays (beams, or their sub-rays) fell outside Embree's range and "
+                 "were not traced\n",
                  options.scene.c_str(), static_cast<unsigned long long>(built.refusedRays()));
   }
 
