@@ -131,6 +131,21 @@ def test_pcl_reads_a_pattern_scan_as_an_unorganised_cloud(tmp_path):
     assert np.isfinite(points[:, 3]).sum() > 1000  # the rosette sees the world
 
 
+def test_open3d_reads_a_pattern_scan_as_an_unorganised_cloud(tmp_path):
+    o3d = pytest.importorskip("open3d", reason="Open3D (Debian: python3-open3d) is not installed")
+    from conftest import SOURCE_DIR
+
+    cli = tmp_path / "vlp16.pcd"
+    run_tool("revolve-lidar", SOURCE_DIR / "scenes" / "robot_world.json", "--sensor",
+             SOURCE_DIR / "examples" / "robot" / "lidar_vlp16_pattern.json", "-o", cli, "--pcd-data", "binary")
+    cloud = o3d.t.io.read_point_cloud(str(cli))
+    expected, width = read_binary_pcd(cli)
+    assert width == len(expected) == 14464  # HEIGHT 1: one row of the pattern's beams
+    assert np.array_equal(cloud.point["positions"].numpy()[:, 0], expected["x"], equal_nan=True)
+    assert np.array_equal(cloud.point["time"].numpy().ravel(), expected["time"])
+    assert np.array_equal(cloud.point["return"].numpy().ravel(), expected["return"])
+
+
 def test_open3d_reads_every_field(dual):
     o3d = pytest.importorskip("open3d", reason="Open3D (Debian: python3-open3d) is not installed")
     cloud = o3d.t.io.read_point_cloud(str(dual["cli"]))
