@@ -157,7 +157,8 @@ TEST(LidarMotionTest, ATiltedRobotsBeamsFollowItsRollAndPitch) {
   b.time = 1, b.pitch = 0.3, b.x = 1;
   io::SensorPose mount;
   mount.position = {0, 0, h};
-  const robot::SensorMotion motion(mount, std::vector<io::RobotPose>{a, b});
+  const std::vector<io::RobotPose> path{a, b};  // the motion keeps a reference to it
+  const robot::SensorMotion motion(mount, path);
   const robot::SensorFrame half = motion.at(0, 0.5);
   const Vec3d ahead = half.rotate({1, 0, 0});
   EXPECT_NEAR(ahead[0], std::cos(0.2), 1e-15);
