@@ -47,6 +47,11 @@ PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_intensity.py do
 PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_motion.py docs/lidar_motion.png
 # A dual-return scan of a pole in front of a wall: two returns where a beam straddles the pole's edge (docs/robot.md).
 PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_lidar_returns.py docs/lidar_returns.png
+# A robot's camera along the path (docs/robot.md, "Cameras along a path"): its frame at pose 3.
+mkdir -p out/frames
+build/bin/revolve-render scenes/robot_world.json --camera examples/robot/camera_front.json \
+  --poses examples/robot/path.csv -o out/frames/front.png --spp 64
+cp out/frames/front_0003.png docs/camera_frame.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png

@@ -145,9 +145,16 @@ std::vector<double> fanAngles(const BeamFan& fan) {
 SensorDescription parseSensor(std::string_view text, const std::string& file) {
   const Reader in(file);
   const Json root = json::parse(text, in);
+  if (root.is_object() && root.contains("type")) {
+    const std::string type = in.string(root["type"], "type");
+    if (type == "camera")
+      in.fail("type", "\"camera\": a camera's file; revolve-render renders it along a path (--camera)");
+    if (type != "lidar")
+      in.fail("type", json::quotedText(type) + " is not a sensor type; expected \"lidar\" (the default)");
+  }
   in.object(root, "",
             {"pose", "horizontal", "vertical", "elevations", "pattern", "range", "noise", "intensity_noise",
-             "rotation_rate", "divergence", "subrays", "returns", "max_returns", "return_separation"});
+             "rotation_rate", "divergence", "subrays", "returns", "max_returns", "return_separation", "type"});
   SensorDescription sensor;
   sensor.file = file;
   sensor.pose = readPose(in, in.required(root, "", "pose"));
@@ -248,6 +255,36 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
                                std::to_string(kMaxBeamsPerPose));
   }
   return sensor;
+}
+
+CameraDescription parseCamera(std::string_view text, const std::string& file) {
+  const Reader in(file);
+  const Json root = json::parse(text, in);
+  in.object(root, "", {"type", "pose", "width", "height", "fov"});
+  const std::string type = in.string(in.required(root, "", "type"), "type");
+  if (type != "camera") {
+    in.fail("type", json::quotedText(type) + ": expected \"camera\" (a lidar's file is scanned by revolve-lidar)");
+  }
+  CameraDescription camera;
+  camera.file = file;
+  camera.pose = readPose(in, in.required(root, "", "pose"));
+  camera.width = in.integerIn(in.required(root, "", "width"), "width", 1, 16384);
+  camera.height = in.integerIn(in.required(root, "", "height"), "height", 1, 16384);
+  const Json& fov = in.required(root, "", "fov");
+  camera.fovDegrees = in.number(fov, "fov");
+  if (!(camera.fovDegrees > 0 && camera.fovDegrees < 180))
+    in.fail("fov", numberText(fov) + " is out of range: the vertical field of view lies in (0, 180) degrees");
+  return camera;
+}
+
+CameraDescription readCamera(const std::string& path) {
+  std::string text;
+  try {
+    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
+  } catch (const InputError& error) {
+    throw SensorError(error.what());
+  }
+  return parseCamera(text, path);
 }
 
 SensorDescription readSensor(const std::string& path) {

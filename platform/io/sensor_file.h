@@ -109,6 +109,22 @@ struct SensorDescription {
 // The name of a return mode as the sensor file writes it.
 const char* returnModeName(ReturnMode mode);
 
+// A camera on the robot: a sensor file with "type": "camera", whose view revolve-render renders at
+// every pose of a path (docs/robot.md, "Cameras along a path"). A pinhole of square pixels looking
+// along its mounting's +X with +Z up (a lidar's beam at azimuth 0, elevation 0):
+//
+//   {"type": "camera", "pose": {"position": [x, y, z], "yaw": a, "pitch": b, "roll": c},
+//    "width": W, "height": H, "fov": degrees}
+//
+// `fov` is the vertical field of view, as the scene file's camera gives it; width and height are
+// pixels, each 1 to 16384.
+struct CameraDescription {
+  std::string file;
+  SensorPose pose;
+  int width = 0, height = 0;
+  double fovDegrees = 0;
+};
+
 inline constexpr double kMaxRotationRate = 1e6;
 
 // Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).
@@ -126,5 +142,8 @@ std::vector<double> fanAngles(const BeamFan& fan);
 SensorDescription parseSensor(std::string_view text, const std::string& file);
 // Reads and parses the file at `path`. Throws SensorError.
 SensorDescription readSensor(const std::string& path);
+// The same for a camera's file. Throws SensorError.
+CameraDescription parseCamera(std::string_view text, const std::string& file);
+CameraDescription readCamera(const std::string& path);
 
 }  // namespace revolve::io

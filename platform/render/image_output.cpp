@@ -51,4 +51,27 @@ void writeImage(io::OutputStream& out, const std::string& output, const Image& i
   out.write(bytes.data(), bytes.size());
 }
 
+void checkDepthImageName(const std::string& output) {
+  if (imageFormatFor(output) != ImageFormat::exr) {
+    throw std::runtime_error(output + ": a depth image is written as EXR (float32 metres); name it .exr");
+  }
+}
+
+void writeDepthImage(io::OutputStream& out, const std::string& output, int width, int height,
+                     const std::vector<float>& depth) {
+  checkDepthImageName(output);
+  OIIO::ImageSpec spec(width, height, 1, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"Z"};
+  spec.attribute("compression", "zip");
+  OIIO::ImageBuf buffer(spec);
+  buffer.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, depth.data());
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  buffer.set_write_ioproxy(&memory);
+  if (!buffer.write("depth.exr", OIIO::TypeDesc::FLOAT, "openexr")) {
+    throw std::runtime_error(output + ": encoding the depth image failed: " + buffer.geterror());
+  }
+  out.write(bytes.data(), bytes.size());
+}
+
 }  // namespace revolve::render

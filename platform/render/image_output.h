@@ -10,6 +10,7 @@
 #include "render/renderer.h"
 
 #include <string>
+#include <vector>
 
 namespace revolve::render {
 
@@ -21,5 +22,11 @@ ImageFormat imageFormatFor(const std::string& path);
 // Encodes `image` in `output`'s format and writes it to `out` (the output's stream);
 // std::runtime_error naming `output` when encoding or writing fails.
 void writeImage(io::OutputStream& out, const std::string& output, const Image& image);
+
+// A depth image: one float32 channel "Z" a pixel, row 0 at the top, in an EXR (any other extension
+// is std::runtime_error naming `output`: depth needs its full precision); +inf where nothing was hit.
+void checkDepthImageName(const std::string& output);
+void writeDepthImage(io::OutputStream& out, const std::string& output, int width, int height,
+                     const std::vector<float>& depth);
 
 }  // namespace revolve::render

@@ -257,6 +257,48 @@ TEST(SensorFileTest, FootprintAndReturnKeys) {
             2);  // the default
 }
 
+TEST(SensorFileTest, ACameraFileHasItsOwnType) {
+  const CameraDescription c = parseCamera(
+      R"({"type": "camera", "pose": {"position": [0.1, 0, 0.9], "pitch": 0.2}, "width": 64, "height": 48,
+          "fov": 50})",
+      "c.json");
+  EXPECT_EQ(c.pose.position, (std::array<double, 3>{0.1, 0, 0.9}));
+  EXPECT_EQ(c.pose.pitch, 0.2);
+  EXPECT_EQ(c.width, 64);
+  EXPECT_EQ(c.height, 48);
+  EXPECT_EQ(c.fovDegrees, 50);
+  // A lidar's reader refuses a camera's file and an unknown type; "lidar" is the default type.
+  const auto refusal = [](const std::string& text) {
+    try {
+      parseSensor(text, "s.json");
+    } catch (const SensorError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_THAT(refusal(R"({"type": "camera", "pose": {"position": [0, 0, 0]}})"),
+              HasSubstr("s.json: type: \"camera\": a camera's file; revolve-render renders it"));
+  EXPECT_THAT(refusal(R"({"type": "sonar"})"), HasSubstr(R"(s.json: type: "sonar" is not a sensor type)"));
+  EXPECT_EQ(parseSensor(std::string(kPlanar).insert(1, R"("type": "lidar", )"), "s.json").horizontal.samples, 5);
+  for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"pose": {"position": [0, 0, 0]}, "width": 4, "height": 4, "fov": 50})", R"(missing key "type")"},
+           {R"({"type": "camera", "pose": {"position": [0, 0, 0]}, "width": 4, "height": 4, "fov": 0})",
+            "fov: 0 is out of range: the vertical field of view lies in (0, 180) degrees"},
+           {R"({"type": "camera", "pose": {"position": [0, 0, 0]}, "width": 16385, "height": 4, "fov": 50})",
+            "width: 16385 is out of range"},
+           {R"({"type": "camera", "pose": {"position": [0, 0, 0]}, "height": 4, "fov": 50})", R"(missing key "width")"},
+           {R"({"type": "camera", "pose": {"position": [0, 0, 0]}, "width": 4, "height": 4, "fov": 50, "spp": 4})",
+            "spp: unknown key"}}) {
+    try {
+      parseCamera(text, "c.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const SensorError& error) {
+      EXPECT_THAT(error.what(), HasSubstr(expected));
+      EXPECT_THAT(error.what(), ::testing::StartsWith("c.json: "));
+    }
+  }
+}
+
 TEST(SensorFileTest, TooManyBeamsAPose) {
   const std::string text = with(R"("samples": 5)", R"("samples": 1048576)");
   const std::string withRings = text.substr(0, text.find(R"("range")")) +

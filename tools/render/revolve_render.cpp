@@ -5,13 +5,17 @@
 #include "cli/command_line.h"
 #include "embree/memory_check.h"
 #include "io/output_set.h"
+#include "io/poses_file.h"
 #include "io/pov_scene.h"
 #include "io/scene_file.h"
+#include "io/sensor_file.h"
 #include "render/curve_polylines.h"
+#include "render/depth_image.h"
 #include "render/glass_checks.h"
 #include "render/image_output.h"
 #include "render/progress.h"
 #include "render/renderer.h"
+#include "robot/camera_rig.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
 #include "scene/picking.h"
@@ -37,7 +41,7 @@ using namespace revolve;
 
 struct Options {
   std::string scene, output, integrator = "path", geometry = "mibit", shell = "cylinder", filter = "tent", stats, pick,
-                             exportPov;
+                             exportPov, camera, poses, depthImage;
   std::optional<io::CurveTolerance> tolerance;  // --tolerance
   int width = 0, height = 0, spp = 0, depth = 0, threads = 0;
   std::uint32_t subdivisions = 0, slices = 64;
@@ -205,7 +209,130 @@ void checkPovName(const std::string& path) {
   if (extension != ".pov") throw std::runtime_error(path + ": --export-pov writes POV-Ray scene files, named .pov");
 }
 
+// The render's settings: the command line's, else the scene camera's defaults, else the renderer's.
+render::RenderSettings renderSettings(const Options& options, const io::SceneDescription& description) {
+  render::RenderSettings settings;
+  settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
+  settings.height = options.height > 0 ? options.height : description.camera.height.value_or(480);
+  settings.spp = options.spp > 0 ? options.spp : description.camera.spp.value_or(16);
+  settings.seed = options.seed;
+  settings.filter = options.filter == "box" ? render::PixelFilter::box : render::PixelFilter::tent;
+  settings.threads = options.threads;
+  settings.integrator.kind =
+      options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
+  settings.integrator.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
+  settings.integrator.shadows = !options.noShadows;
+  settings.integrator.regularize = !options.noRegularize;
+  settings.integrator.filteredShadows = options.filteredShadows;
+  settings.measurePhases = !options.stats.empty();
+  return settings;
+}
+
+// Frame `index` of `count`'s file: `path` with _NNNN before its extension (at least 4 digits, as
+// many as the last frame's number needs), e.g. out/frame.png -> out/frame_0007.png.
+std::string framePath(const std::string& path, std::size_t index, std::size_t count, const std::string& extension) {
+  const std::filesystem::path p(path);
+  const int digits = std::max<int>(4, int(std::to_string(count == 0 ? 0 : count - 1).size()));
+  char number[32];
+  std::snprintf(number, sizeof number, "_%0*zu", digits, index);
+  return (p.parent_path() / (p.stem().string() + number + extension)).string();
+}
+
+// --camera with --poses: the robot's camera (a sensor file of type camera) rendered at every pose
+// of the path, one frame of files a pose, each frame whole or absent (its files renamed into
+// place together). Beside each image its camera's ROS CameraInfo (JSON) and, with --depth-image,
+// a depth image (render/depth_image.h).
+void renderPath(const Options& options) {
+  if (options.camera.empty() || options.poses.empty())
+    throw std::runtime_error("--camera and --poses go together: a camera renders along a path of poses");
+  if (!options.pick.empty() || !options.exportPov.empty() || !options.stats.empty())
+    throw std::runtime_error("--camera: renders frames along a path; --pick, --export-pov and --stats take one view");
+  if (options.width > 0 || options.height > 0)
+    throw std::runtime_error("--camera " + options.camera + ": the camera file gives the image's width and height");
+  if (options.output.empty())
+    throw std::runtime_error("--camera: -o names the frames (out/frame.png: frame_0000.png, ...)");
+  render::imageFormatFor(options.output);
+  if (!options.depthImage.empty()) render::checkDepthImageName(options.depthImage);
+  io::SceneDescription description = io::readScene(options.scene);
+  const io::CameraDescription camera = io::readCamera(options.camera);
+  const std::vector<io::RobotPose> poses = io::readPosesCsv(options.poses);
+  render::RenderSettings settings = renderSettings(options, description);
+  settings.width = camera.width;
+  settings.height = camera.height;
+  app::requireMemory(40.0 * settings.width * settings.height, "an image of " + std::to_string(settings.width) + " x " +
+                                                                  std::to_string(settings.height) + " pixels");
+  std::vector<render::CurvePolyline> curves;
+  if (options.tolerance) curves = render::applyCurveTolerance(description, *options.tolerance, settings.height);
+  checkKajiya(options, description);
+  const scene::EmbreeScene built(description, buildSettings(options));
+  printWarnings(sceneWarnings(description));
+  printWarnings(render::glassWarnings(description));
+  const std::array<double, 9> k = robot::intrinsics(camera);
+  const float scale = float(std::exp2(options.exposure));
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const std::string image =
+        framePath(options.output, i, poses.size(), std::filesystem::path(options.output).extension().string());
+    const std::string info = framePath(options.output, i, poses.size(), ".json");
+    const std::string depth = options.depthImage.empty() ? "" : framePath(options.depthImage, i, poses.size(), ".exr");
+    io::OutputSet outputs;
+    outputs.addInput("the scene file", options.scene);
+    for (const io::SceneProfile& profile : description.profiles)
+      outputs.addInput("a profile CSV of the scene", profile.csvFile);
+    outputs.addInput("the camera file (--camera)", options.camera);
+    outputs.addInput("the poses file (--poses)", options.poses);
+    outputs.add("-o", image);
+    outputs.add("-o (camera info)", info);
+    if (!depth.empty()) outputs.add("--depth-image", depth);
+
+    const std::optional<int> spp = description.camera.spp;
+    description.camera = robot::cameraAt(camera, poses[i]);
+    description.camera.spp = spp;
+    render::RenderResult result = render::render(description, built, settings);
+    for (float& value : result.image.pixels) value *= scale;
+    render::writeImage(outputs.stream(image), image, result.image);
+    if (!depth.empty()) {
+      render::writeDepthImage(
+          outputs.stream(depth), depth, settings.width, settings.height,
+          render::depthImage(built, description.camera, settings.width, settings.height, options.threads));
+    }
+    // sensor_msgs/msg/CameraInfo's fields (ROS 2 names), the camera's optical frame in the world
+    // (x right, y down, z forward) and the pose it was rendered at.
+    const std::array<double, 9> rotation = robot::opticalRotation(camera, poses[i]);
+    nlohmann::ordered_json json;
+    json["frame"] = i;
+    json["time"] = poses[i].timed() ? nlohmann::ordered_json(poses[i].time) : nlohmann::ordered_json(nullptr);
+    json["height"] = camera.height;
+    json["width"] = camera.width;
+    json["distortion_model"] = "none";
+    json["d"] = nlohmann::ordered_json::array();
+    json["k"] = k;
+    json["r"] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    json["p"] = {k[0], 0, k[2], 0, 0, k[4], k[5], 0, 0, 0, 1, 0};
+    json["frame_id"] = "camera_optical";
+    json["position"] = description.camera.from;
+    json["rotation"] = rotation;  // world from optical, row-major
+    if (!depth.empty()) json["depth_image"] = std::filesystem::path(depth).filename().string();
+    json["image"] = std::filesystem::path(image).filename().string();
+    const std::string text = json.dump(1) + "\n";
+    outputs.write(info, [&](std::FILE* out) { std::fputs(text.c_str(), out); });
+    outputs.commit();
+    std::printf("revolve-render: frame %zu of %zu: %s\n", i + 1, poses.size(), image.c_str());
+    std::fflush(stdout);
+  }
+  if (built.refusedRays() > 0) {
+    std::fprintf(stderr, "revolve-render: warning: %s: %llu rays fell outside Embree's range and were not traced\n",
+                 options.scene.c_str(), static_cast<unsigned long long>(built.refusedRays()));
+  }
+}
+
 void run(const Options& options) {
+  if (!options.camera.empty() || !options.poses.empty() || !options.depthImage.empty()) {
+    if (!options.depthImage.empty() && options.camera.empty())
+      throw std::runtime_error("--depth-image " + options.depthImage +
+                               ": depth images are rendered along a path (--camera, --poses)");
+    renderPath(options);
+    return;
+  }
   if (!options.pick.empty()) {
     // Picking prints what lies under a pixel and renders nothing: an output would stay unwritten.
     if (!options.output.empty())
@@ -246,20 +373,7 @@ void run(const Options& options) {
     return;
   }
 
-  render::RenderSettings settings;
-  settings.width = options.width > 0 ? options.width : description.camera.width.value_or(640);
-  settings.height = options.height > 0 ? options.height : description.camera.height.value_or(480);
-  settings.spp = options.spp > 0 ? options.spp : description.camera.spp.value_or(16);
-  settings.seed = options.seed;
-  settings.filter = options.filter == "box" ? render::PixelFilter::box : render::PixelFilter::tent;
-  settings.threads = options.threads;
-  settings.integrator.kind =
-      options.integrator == "whitted" ? render::IntegratorKind::whitted : render::IntegratorKind::path;
-  settings.integrator.depth = options.depth > 0 ? options.depth : render::IntegratorSettings{}.depth;
-  settings.integrator.shadows = !options.noShadows;
-  settings.integrator.regularize = !options.noRegularize;
-  settings.integrator.filteredShadows = options.filteredShadows;
-  settings.measurePhases = !options.stats.empty();
+  const render::RenderSettings settings = renderSettings(options, description);
 
   // The float image, OpenImageIO's copy of it and the converted one: 3 x 12 bytes a pixel.
   app::requireMemory(36.0 * settings.width * settings.height, "an image of " + std::to_string(settings.width) + " x " +
@@ -372,6 +486,16 @@ int main(int argc, char** argv) {
           },
           "X,Y"))
       ->excludes(exportOption);
+  app.add_option("--camera", options.camera,
+                 "a robot's camera (a sensor file of type camera): render its view at every pose of --poses, "
+                 "frames numbered by pose (-o out/frame.png: out/frame_0000.png, ...), each with its CameraInfo JSON")
+      ->check(app::kNonEmpty);
+  app.add_option("--poses", options.poses, "the robot's path for --camera (POSES.csv, as revolve-lidar reads it)")
+      ->check(app::kNonEmpty);
+  app.add_option("--depth-image", options.depthImage,
+                 "with --camera: also a depth image a frame (EXR, float32 distance along the optical axis, +inf for "
+                 "nothing; out/depth.exr: out/depth_0000.exr, ...)")
+      ->check(app::kNonEmpty);
   if (const std::optional<int> status = app::parseCommandLine(app, argc, argv, "revolve-render")) return *status;
   return app::runTool("revolve-render", options.scene, [&] { run(options); });
 }
