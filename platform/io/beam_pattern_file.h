@@ -8,6 +8,8 @@
 // rule it breaks.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>

@@ -3,6 +3,7 @@
 #include "io/json_reader.h"
 #include "io/text_files.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>

@@ -22,6 +22,7 @@
 #include <pybind11/stl.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
