@@ -29,15 +29,32 @@ double elevation(const Reader& in, const Json& value, const std::string& path) {
   return in.numberIn(value, path, -kRightAngle, kRightAngle, "an elevation lies in [-pi/2, pi/2] radians");
 }
 
-SensorPose readPose(const Reader& in, const Json& json) {
-  const std::string path = "pose";
+SensorPose readPose(const Reader& in, const Json& json, const std::string& path = "pose") {
   in.object(json, path, {"position", "yaw", "pitch", "roll"});
   SensorPose pose;
-  pose.position = in.position(in.required(json, path, "position"), "pose.position");
-  if (const Json* v = in.optional(json, "yaw")) pose.yaw = angle(in, *v, "pose.yaw");
-  if (const Json* v = in.optional(json, "pitch")) pose.pitch = angle(in, *v, "pose.pitch");
-  if (const Json* v = in.optional(json, "roll")) pose.roll = angle(in, *v, "pose.roll");
+  pose.position = in.position(in.required(json, path, "position"), child(path, "position"));
+  if (const Json* v = in.optional(json, "yaw")) pose.yaw = angle(in, *v, child(path, "yaw"));
+  if (const Json* v = in.optional(json, "pitch")) pose.pitch = angle(in, *v, child(path, "pitch"));
+  if (const Json* v = in.optional(json, "roll")) pose.roll = angle(in, *v, child(path, "roll"));
   return pose;
+}
+
+// Gaussian noise: {"mean": m, "stddev": s, "seed": k}, stddev required.
+void readNoise(const Reader& in, const Json& noise, const std::string& path, double& mean, double& stddev,
+               std::uint64_t& seed) {
+  in.object(noise, path, {"mean", "stddev", "seed"});
+  stddev = in.number(in.required(noise, path, "stddev"), child(path, "stddev"));
+  if (!(stddev >= 0)) in.fail(child(path, "stddev"), numberText(stddev) + " is negative");
+  if (const Json* v = in.optional(noise, "mean")) mean = in.number(*v, child(path, "mean"));
+  if (const Json* v = in.optional(noise, "seed")) seed = in.unsignedInteger(*v, child(path, "seed"));
+}
+
+std::string readText(const std::string& path) {
+  try {
+    return readTextFile(path, kMaxJsonFileBytes, "a JSON file");
+  } catch (const InputError& error) {
+    throw SensorError(error.what());
+  }
 }
 
 // A fan of beams; `limit` reads one angle (azimuths may span a turn, elevations half of one).
@@ -150,8 +167,14 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
     const std::string type = in.string(root["type"], "type");
     if (type == "camera")
       in.fail("type", "\"camera\": a camera's file; revolve-render renders it along a path (--camera)");
+    if (type == "range")
+      in.fail("type",
+              "\"range\": a range sensor's file (sonar or infrared cones), read as one by revolve-lidar and "
+              "revolve.RangeSensors, not as a lidar");
     if (type != "lidar")
-      in.fail("type", json::quotedText(type) + " is not a sensor type; expected \"lidar\" (the default)");
+      in.fail("type", json::quotedText(type) +
+                          " is not a sensor type; expected \"lidar\" (the default), \"range\" "
+                          "or \"camera\"");
   }
   in.object(root, "",
             {"pose", "horizontal", "vertical", "elevations", "pattern", "range", "noise", "intensity_noise",
@@ -228,13 +251,8 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
       in.fail("range.resolution", numberText(sensor.resolution) + " is negative; 0 means none");
   }
 
-  if (const Json* noise = in.optional(root, "noise")) {
-    in.object(*noise, "noise", {"mean", "stddev", "seed"});
-    sensor.noiseStddev = in.number(in.required(*noise, "noise", "stddev"), "noise.stddev");
-    if (!(sensor.noiseStddev >= 0)) in.fail("noise.stddev", numberText(sensor.noiseStddev) + " is negative");
-    if (const Json* mean = in.optional(*noise, "mean")) sensor.noiseMean = in.number(*mean, "noise.mean");
-    if (const Json* seed = in.optional(*noise, "seed")) sensor.noiseSeed = in.unsignedInteger(*seed, "noise.seed");
-  }
+  if (const Json* noise = in.optional(root, "noise"))
+    readNoise(in, *noise, "noise", sensor.noiseMean, sensor.noiseStddev, sensor.noiseSeed);
   if (const Json* noise = in.optional(root, "intensity_noise")) {
     in.object(*noise, "intensity_noise", {"stddev", "seed"});
     sensor.intensityNoiseStddev =
@@ -278,24 +296,126 @@ CameraDescription parseCamera(std::string_view text, const std::string& file) {
   return camera;
 }
 
-CameraDescription readCamera(const std::string& path) {
-  std::string text;
-  try {
-    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
-  } catch (const InputError& error) {
-    throw SensorError(error.what());
-  }
-  return parseCamera(text, path);
+CameraDescription readCamera(const std::string& path) { return parseCamera(readText(path), path); }
+
+SensorDescription readSensor(const std::string& path) { return parseSensor(readText(path), path); }
+
+const char* radiationTypeName(RadiationType type) {
+  return type == RadiationType::infrared ? "infrared" : "ultrasound";
 }
 
-SensorDescription readSensor(const std::string& path) {
-  std::string text;
-  try {
-    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
-  } catch (const InputError& error) {
-    throw SensorError(error.what());
-  }
-  return parseSensor(text, path);
+SensorType parseSensorType(std::string_view text, const std::string& file) {
+  const Reader in(file);
+  const Json root = json::parse(text, in);
+  if (!root.is_object() || !root.contains("type")) return SensorType::lidar;
+  const std::string type = in.string(root["type"], "type");
+  if (type == "lidar") return SensorType::lidar;
+  if (type == "camera") return SensorType::camera;
+  if (type == "range") return SensorType::range;
+  in.fail("type", json::quotedText(type) +
+                      " is not a sensor type; expected \"lidar\" (the default), \"range\" or "
+                      "\"camera\"");
 }
+
+SensorType readSensorType(const std::string& path) { return parseSensorType(readText(path), path); }
+
+RangeSensorsDescription parseRangeSensors(std::string_view text, const std::string& file) {
+  const Reader in(file);
+  const Json root = json::parse(text, in);
+  in.object(root, "",
+            {"type", "name", "pose", "field_of_view", "min_range", "max_range", "radiation_type", "noise", "sensors"});
+  const std::string type = in.string(in.required(root, "", "type"), "type");
+  if (type != "range") {
+    in.fail("type", json::quotedText(type) + ": expected \"range\" (a lidar's file has \"lidar\" or no type)");
+  }
+  const Json* ring = in.optional(root, "sensors");
+  if (ring != nullptr) {
+    for (const char* own : {"pose", "name"}) {
+      if (in.optional(root, own) != nullptr)
+        in.fail(own, "with \"sensors\", each sensor gives its own " + std::string(own) + " in its entry");
+    }
+    in.array(*ring, "sensors");
+    if (ring->empty()) in.fail("sensors", "the list is empty; give at least one sensor");
+    if (ring->size() > kMaxRangeSensors)
+      in.fail("sensors", std::to_string(ring->size()) + " sensors; at most " + std::to_string(kMaxRangeSensors));
+  }
+  RangeSensorsDescription result;
+  result.file = file;
+  const std::size_t count = ring != nullptr ? ring->size() : 1;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string at = ring != nullptr ? element("sensors", i) : "";
+    const Json& entry = ring != nullptr ? (*ring)[i] : root;
+    if (ring != nullptr) {
+      in.object(entry, at, {"name", "pose", "field_of_view", "min_range", "max_range", "radiation_type", "noise"});
+    }
+    // A key of the entry, else the file's default for every sensor; `path` names where it was found.
+    std::string path;
+    const auto find = [&](const char* key) -> const Json* {
+      if (ring != nullptr) {
+        if (const Json* own = in.optional(entry, key)) {
+          path = child(at, key);
+          return own;
+        }
+      }
+      path = key;
+      return in.optional(root, key);
+    };
+    const auto require = [&](const char* key) -> const Json& {
+      if (const Json* v = find(key)) return *v;
+      in.fail(at, std::string("missing key \"") + key + "\"" +
+                      (ring != nullptr ? " (in the entry, or beside \"sensors\" for every sensor)" : ""));
+    };
+    RangeSensorDescription sensor;
+    if (const Json* name = find("name")) {
+      sensor.name = in.string(*name, path);
+      if (sensor.name.empty() || sensor.name.size() > 256)
+        in.fail(path, "a name has 1 to 256 characters (it becomes the sensor's frame id)");
+      for (const unsigned char c : sensor.name) {
+        if (c < 0x20 || c == 0x7f) in.fail(path, "a name holds no control characters");
+      }
+    } else {
+      sensor.name = ring != nullptr ? "range_" + std::to_string(i) : "range";
+    }
+    const Json& pose = require("pose");
+    sensor.pose = readPose(in, pose, path);
+    const Json& fov = require("field_of_view");
+    sensor.fieldOfView = in.number(fov, path);
+    if (!(sensor.fieldOfView > 0 && sensor.fieldOfView <= std::numbers::pi)) {
+      in.fail(path,
+              numberText(fov) +
+                  " is out of range: the cone's full angle lies in (0, pi] radians (pi: the half-space in front)");
+    }
+    const Json& low = require("min_range");
+    const std::string lowPath = path;
+    sensor.minRange = in.number(low, lowPath);
+    if (!(sensor.minRange >= 0)) in.fail(lowPath, numberText(low) + " is negative; a range is >= 0");
+    const Json& high = require("max_range");
+    sensor.maxRange = in.number(high, path);
+    if (!(sensor.maxRange > sensor.minRange)) {
+      in.fail(path,
+              numberText(high) + " is not above min_range = " + numberText(sensor.minRange) + " (" + lowPath + ")");
+    }
+    const Json& radiation = require("radiation_type");
+    const std::string kind = in.string(radiation, path);
+    if (kind == "ultrasound") {
+      sensor.radiation = RadiationType::ultrasound;
+    } else if (kind == "infrared") {
+      sensor.radiation = RadiationType::infrared;
+    } else {
+      in.fail(path, json::quotedText(kind) +
+                        " is not a radiation type; expected \"ultrasound\" or \"infrared\" (ROS's Range constants)");
+    }
+    if (const Json* noise = find("noise"))
+      readNoise(in, *noise, path, sensor.noiseMean, sensor.noiseStddev, sensor.noiseSeed);
+    for (const RangeSensorDescription& other : result.sensors) {
+      if (other.name == sensor.name)
+        in.fail(ring != nullptr ? child(at, "name") : "name", json::quotedText(sensor.name) + " names two sensors");
+    }
+    result.sensors.push_back(std::move(sensor));
+  }
+  return result;
+}
+
+RangeSensorsDescription readRangeSensors(const std::string& path) { return parseRangeSensors(readText(path), path); }
 
 }  // namespace revolve::io

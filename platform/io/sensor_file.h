@@ -125,6 +125,43 @@ struct CameraDescription {
   double fovDegrees = 0;
 };
 
+// A range sensor (a sonar or an infrared ranger) as ROS's sensor_msgs/Range describes one: a cone
+// of full angle `field_of_view` (radians) about the sensor's +X, reporting the distance to the
+// nearest surface inside it (robot/range_sensors.h). A sensor file with "type": "range" holds one
+// sensor, or a ring of them under "sensors" (the other keys, given beside "sensors", are every
+// sensor's defaults, and each entry may set its own):
+//
+//   {"type": "range", "pose": {...}, "name": "sonar",
+//    "field_of_view": f, "min_range": r0, "max_range": r1,
+//    "radiation_type": "ultrasound" | "infrared", "noise": {"mean": m, "stddev": s, "seed": k}}
+//   {"type": "range", "field_of_view": f, ..., "sensors": [{"name": "sonar_0", "pose": {...}}, ...]}
+enum class RadiationType { ultrasound = 0, infrared = 1 };  // ROS's Range.ULTRASOUND, Range.INFRARED
+
+struct RangeSensorDescription {
+  std::string name;  // unique in its file; default "range" (one sensor) or "range_<index>"
+  SensorPose pose;
+  double fieldOfView = 0;             // full cone angle, radians, in (0, pi]
+  double minRange = 0, maxRange = 0;  // 0 <= minRange < maxRange, finite
+  RadiationType radiation = RadiationType::ultrasound;
+  double noiseMean = 0, noiseStddev = 0;  // Gaussian, added to a reading; stddev 0 = none
+  std::uint64_t noiseSeed = 0;
+};
+
+struct RangeSensorsDescription {
+  std::string file;
+  std::vector<RangeSensorDescription> sensors;
+};
+
+inline constexpr std::size_t kMaxRangeSensors = 1024;
+
+// The name of a radiation type as the sensor file writes it (ROS's constant, in lower case).
+const char* radiationTypeName(RadiationType type);
+
+// What a sensor file describes: its "type" (a lidar without one).
+enum class SensorType { lidar, camera, range };
+SensorType parseSensorType(std::string_view text, const std::string& file);
+SensorType readSensorType(const std::string& path);
+
 inline constexpr double kMaxRotationRate = 1e6;
 
 // Limits that keep a scan's output within reason (about 1 GB of CSV a pose at most).
@@ -145,5 +182,8 @@ SensorDescription readSensor(const std::string& path);
 // The same for a camera's file. Throws SensorError.
 CameraDescription parseCamera(std::string_view text, const std::string& file);
 CameraDescription readCamera(const std::string& path);
+// The same for range sensors' files.
+RangeSensorsDescription parseRangeSensors(std::string_view text, const std::string& file);
+RangeSensorsDescription readRangeSensors(const std::string& path);
 
 }  // namespace revolve::io

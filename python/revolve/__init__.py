@@ -6,6 +6,7 @@ intersection at its leaves, splines solved as curves) instead of tessellating it
 
 RaycastingScene     Open3D's RaycastingScene (0.19) with exact surfaces of revolution beside meshes
 Scene, Lidar        a scene file and revolve-lidar's range-finder, bit for bit the tool's scans
+RangeSensors        sonar and infrared cones (ROS Range): the nearest surface inside each, exact
 ScanFile            a scan written as revolve-lidar writes it (PCD or CSV), shard by shard
 scan_shard          one shard of a scan traced from files, loaded once per process
 shard_poses         the poses one shard of a scan needs (a moving sensor's path past its sweeps)
@@ -20,6 +21,7 @@ from ._shards import scan_shard, shard_poses
 from ._revolve import (
     Lidar,
     ProfileError,
+    RangeSensors,
     RaycastingScene,
     ScanFile,
     Scene,
@@ -33,6 +35,7 @@ RaycastingScene.create_rays_pinhole = staticmethod(_create_rays_pinhole)
 __all__ = [
     "Lidar",
     "ProfileError",
+    "RangeSensors",
     "RaycastingScene",
     "ScanFile",
     "Scene",

@@ -15,6 +15,7 @@
 #include "io/temporary_files.h"
 #include "robot/clearance_map.h"
 #include "robot/lidar.h"
+#include "robot/range_sensors.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
 #include "threads/thread_arenas.h"
@@ -55,8 +56,12 @@ struct ToolScene {
   std::mutex clearanceMutex;
   std::map<double, std::unique_ptr<robot::ClearanceMap>> clearanceMaps;  // by ground height
 
+  robot::RangeSensors::Settings rangeSettings;  // the same geometry for range sensors' cones
+
   ToolScene(const std::string& file, const std::string& geometry, std::uint32_t slices)
       : path(file), description((checkSettings(geometry, slices), io::readScene(file))) {
+    rangeSettings.mesh = geometry == "mesh";
+    rangeSettings.slices = slices;
     for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
     warnAbout(scene::degenerateObjectWarnings(description, false));
     scene::BuildSettings settings;
@@ -215,6 +220,62 @@ io::SensorDescription sensorOf(py::handle sensor) {
                          "; expected a sensor file's path or its JSON as a dict");
   }
   return io::readSensor(pathArgument(sensor, "sensor"));
+}
+
+struct PyRangeSensors {
+  io::RangeSensorsDescription sensors;
+};
+
+io::RangeSensorsDescription rangeSensorsOf(py::handle sensor) {
+  if (py::isinstance<py::dict>(sensor)) {
+    std::string text;
+    appendJson(text, sensor, "");
+    return io::parseRangeSensors(text, "sensor");
+  }
+  if (!py::isinstance<py::str>(sensor) && !py::isinstance<py::bytes>(sensor) && !py::hasattr(sensor, "__fspath__")) {
+    throw py::type_error("sensor: a " + std::string(py::str(py::type::handle_of(sensor).attr("__name__"))) +
+                         "; expected a range sensor file's path or its JSON as a dict");
+  }
+  return io::readRangeSensors(pathArgument(sensor, "sensor"));
+}
+
+py::dict readRanges(const PyRangeSensors& self, py::handle sceneObject, py::handle posesObject,
+                    py::handle threadsObject, py::handle firstPoseObject) {
+  const int threads = threadsArgument(threadsObject, "threads", false);
+  const std::uint64_t firstPose = unsignedArgument(firstPoseObject, "first_pose", 0, io::kMaxScanPoints);
+  const std::vector<io::RobotPose> poses = posesOf(posesObject);
+  const std::shared_ptr<ToolScene> scene = sceneOf(sceneObject);
+  std::optional<robot::RangeSensors> ranging;
+  try {
+    ranging.emplace(scene->description, self.sensors, scene->rangeSettings);
+  } catch (const std::invalid_argument& error) {
+    throw py::value_error(error.what());
+  }
+  const py::ssize_t n = py::ssize_t(poses.size()), count = py::ssize_t(self.sensors.sensors.size());
+  py::array_t<double> range(std::vector<py::ssize_t>{n, count}), point(std::vector<py::ssize_t>{n, count, 3});
+  py::array_t<std::int64_t> object(std::vector<py::ssize_t>{n, count});
+  double* ranges = range.mutable_data();
+  double* points = point.mutable_data();
+  std::int64_t* objects = object.mutable_data();
+  {
+    py::gil_scoped_release release;
+    ranging->readAll(
+        poses, threads,
+        [&](std::uint64_t first, std::span<const io::RangeReading> block) {
+          const std::size_t at = std::size_t(first - firstPose) * std::size_t(count);
+          for (std::size_t i = 0; i < block.size(); ++i) {
+            ranges[at + i] = block[i].range;
+            for (std::size_t k = 0; k < 3; ++k) points[3 * (at + i) + k] = block[i].point[k];
+            objects[at + i] = block[i].object;
+          }
+        },
+        firstPose);
+  }
+  py::dict result;
+  result["range"] = range;
+  result["point"] = point;
+  result["object"] = object;
+  return result;
 }
 
 // A scan's points in numpy arrays shaped (poses, rings, azimuths), or (poses, returns, rings,
@@ -515,6 +576,78 @@ fires (docs/robot.md).)")
       .def_property_readonly(
           "sweep_duration", [](const PySensor& s) { return s.sensor.sweepDuration(); },
           "seconds from a sweep's first beam to its last (0 without a rotation_rate or pattern times)");
+
+  py::class_<PyRangeSensors>(
+      m, "RangeSensors",
+      R"(Range sensors (sonars, infrared rangers): a sensor file with "type": "range" (its path, or
+its JSON as a dict), one sensor or a ring of them, as revolve-lidar reads it (docs/robot.md).
+
+read(scene, poses) gives each sensor's reading at each pose, bit for bit revolve-lidar's table: the
+distance to the nearest surface inside the sensor's cone (ROS Range), exact, with the sensor's
+seeded noise; inf where there is none or it falls outside [min_range, max_range]. A dict of
+arrays: range (poses, sensors) float64, point (poses, sensors, 3) float64 (the reading's point in
+the world frame, nan for none) and object (poses, sensors) int64 (the scene's object index, quads
+after the objects, -1 for none).)")
+      .def(py::init([](py::handle sensor) { return PyRangeSensors{rangeSensorsOf(sensor)}; }), py::arg("sensor"))
+      .def("read", &readRanges, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
+           py::arg("first_pose") = py::int_(0),
+           "scene: a Scene or a scene file's path; poses: as Lidar.scan takes them, or a POSES.csv path; "
+           "first_pose: the number of poses[0] in a path read in parts (its noise is that pose's)")
+      .def_property_readonly("count", [](const PyRangeSensors& s) { return s.sensors.sensors.size(); })
+      .def_property_readonly(
+          "names",
+          [](const PyRangeSensors& s) {
+            py::list names;
+            for (const io::RangeSensorDescription& d : s.sensors.sensors) names.append(d.name);
+            return names;
+          },
+          "each sensor's name (its frame id), in the file's order")
+      .def_property_readonly(
+          "radiation_type",
+          [](const PyRangeSensors& s) {
+            py::list types;
+            for (const io::RangeSensorDescription& d : s.sensors.sensors)
+              types.append(io::radiationTypeName(d.radiation));
+            return types;
+          },
+          "\"ultrasound\" or \"infrared\", a sensor")
+      .def_property_readonly(
+          "field_of_view",
+          [](const PyRangeSensors& s) {
+            py::array_t<double> a(py::ssize_t(s.sensors.sensors.size()));
+            for (std::size_t i = 0; i < s.sensors.sensors.size(); ++i)
+              a.mutable_at(py::ssize_t(i)) = s.sensors.sensors[i].fieldOfView;
+            return a;
+          },
+          "full cone angles, radians")
+      .def_property_readonly("min_range",
+                             [](const PyRangeSensors& s) {
+                               py::array_t<double> a(py::ssize_t(s.sensors.sensors.size()));
+                               for (std::size_t i = 0; i < s.sensors.sensors.size(); ++i)
+                                 a.mutable_at(py::ssize_t(i)) = s.sensors.sensors[i].minRange;
+                               return a;
+                             })
+      .def_property_readonly("max_range",
+                             [](const PyRangeSensors& s) {
+                               py::array_t<double> a(py::ssize_t(s.sensors.sensors.size()));
+                               for (std::size_t i = 0; i < s.sensors.sensors.size(); ++i)
+                                 a.mutable_at(py::ssize_t(i)) = s.sensors.sensors[i].maxRange;
+                               return a;
+                             })
+      .def_property_readonly(
+          "mounting",
+          [](const PyRangeSensors& s) {
+            const py::ssize_t n = py::ssize_t(s.sensors.sensors.size());
+            py::array_t<double> a(std::vector<py::ssize_t>{n, 6});
+            for (py::ssize_t i = 0; i < n; ++i) {
+              const io::SensorPose& pose = s.sensors.sensors[std::size_t(i)].pose;
+              const double values[6] = {pose.position[0], pose.position[1], pose.position[2],
+                                        pose.yaw,         pose.pitch,       pose.roll};
+              for (py::ssize_t k = 0; k < 6; ++k) a.mutable_at(i, k) = values[k];
+            }
+            return a;
+          },
+          "(sensors, 6): x, y, z, yaw, pitch, roll of each sensor on the robot (R = Rz(yaw) Ry(pitch) Rx(roll))");
 
   py::class_<ScanFile>(m, "ScanFile",
                        R"(A scan file (.pcd or .csv, as revolve-lidar writes it), written shard by shard in pose order.

@@ -238,8 +238,73 @@ std::vector<BadRun> badLidarRuns() {
   };
 }
 
+// A sonar on the robot, 0.5 above the floor, looking along +X with a 0.4 rad cone.
+const std::string kSonar = R"({
+  "type": "range", "pose": {"position": [0, 0, 0.5]}, "field_of_view": 0.4, "min_range": 0.1, "max_range": 5,
+  "radiation_type": "ultrasound"
+})";
+
+std::vector<BadRun> badRangeRuns() {
+  std::vector<std::string> pcd = kLidarArgs;
+  pcd.back() = "{dir}/ranges.pcd";
+  std::vector<std::string> plot = kLidarArgs;
+  plot.insert(plot.end(), {"--plot", "{dir}/ranges.png"});
+  return {
+      {"ConeAngleZero", kLidarArgs, "sensor.json: field_of_view: 0 is out of range", kScene,
+       replaced(kSonar, R"("field_of_view": 0.4)", R"("field_of_view": 0)")},
+      {"ConeAngleOverPi", kLidarArgs, "sensor.json: field_of_view: 4 is out of range", kScene,
+       replaced(kSonar, R"("field_of_view": 0.4)", R"("field_of_view": 4)")},
+      {"MinAboveMax", kLidarArgs, "sensor.json: max_range: 5 is not above min_range = 6", kScene,
+       replaced(kSonar, R"("min_range": 0.1)", R"("min_range": 6)")},
+      {"UnknownRadiation", kLidarArgs, R"(sensor.json: radiation_type: "sound" is not a radiation type)", kScene,
+       replaced(kSonar, R"("ultrasound")", R"("sound")")},
+      {"NoPoses", kLidarArgs, "poses.csv: no poses after the header", kScene, kSonar, "x,y,yaw\n"},
+      {"PcdOutput", pcd, "describes range sensors, whose readings are a CSV table", kScene, kSonar},
+      {"Plot", plot, "--plot draws a lidar's scan", kScene, kSonar},
+      {"UnequalScale", kLidarArgs, "a range sensor's exact reading needs an object scaled equally",
+       replaced(kScene, R"("translate": [2, 0, 0])", R"("translate": [2, 0, 0], "scale": [1, 1, 2])"), kSonar},
+  };
+}
+
 // One bad input of each kind per tool (the readers' and the --robot argument's every rule are
 // checked in process), in one test: each process costs about a second under the sanitizers.
+TEST(RevolveLidarCliTest, RangeSensorsBadInputsGiveOneLineANonZeroExitAndNoOutput) {
+  for (const BadRun& bad : badRangeRuns()) {
+    SCOPED_TRACE(bad.name);
+    expectOneLineFailure(REVOLVE_LIDAR_PATH, bad, "revolve-lidar: ");
+  }
+}
+
+TEST(RevolveLidarCliTest, RangeSensorsReadTheNearestSurfaceInsideTheirCone) {
+  // The pole (radius 0.25 at (2, 0)) seen from 0.5 above the floor: straight on, the nearest point
+  // is the pole's, 1.75 away; turned by b from it, the nearest point inside the cone of half-angle
+  // a = 0.2 lies on the boundary ray nearest the pole's axis (at b - a from it), on the circle of
+  // radius 0.25 about (2, 0) in the sonar's plane, unless the floor (0.5 below, seen at
+  // 0.5 / sin(a) = 2.52 at the cone's lowest ray) is nearer; turned away, the floor alone.
+  const ScratchDirectory dir;
+  dir.write("scene.json", kScene);
+  dir.write("sensor.json", kSonar);
+  dir.write("poses.csv", "x,y,yaw\n0,0,0\n0,0,0.3\n0,0,1.5\n");
+  const testing::ProcessResult run = runProcess(
+      REVOLVE_LIDAR_PATH,
+      {dir / "scene.json", "--sensor", dir / "sensor.json", "--poses", dir / "poses.csv", "-o", dir / "ranges.csv"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::vector<std::string> rows = lines(readWholeFile(dir / "ranges.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0], "pose,sensor,range,x,y,z,object");
+  expectRow(rows[1], {0, 0, 1.75, 1.75, 0, 0.5, 0});
+  const double a = 0.2, D = 2, R = 0.25, gamma = 0.3 - a;
+  const double s = D * std::cos(gamma) - std::sqrt(R * R - D * D * std::sin(gamma) * std::sin(gamma));
+  // The boundary ray at yaw 0.3 - 0.2 = 0.1: the point at angle 0.1 from +X.
+  expectRow(rows[2], {1, 0, s, s * std::cos(0.1), s * std::sin(0.1), 0.5, 0});
+  const double floor = 0.5 / std::sin(a);
+  const std::vector<double> third = numbers(rows[3]);
+  ASSERT_EQ(third.size(), 7u) << rows[3];
+  EXPECT_NEAR(third[2], floor, 1e-9) << rows[3];
+  EXPECT_NEAR(third[5], 0.0, 1e-9) << rows[3];
+  EXPECT_EQ(third[6], 1) << "the floor, the quad after the one object";
+}
+
 TEST(RevolveLidarCliTest, BadInputsGiveOneLineANonZeroExitAndNoOutput) {
   for (const BadRun& bad : badLidarRuns()) {
     SCOPED_TRACE(bad.name);

@@ -294,6 +294,92 @@ TEST(SensorFileTest, ACameraFileHasItsOwnType) {
   }
 }
 
+const std::string kSonarRing = R"({
+  "type": "range", "radiation_type": "ultrasound", "field_of_view": 0.5, "min_range": 0.1, "max_range": 5,
+  "noise": {"stddev": 0.01, "seed": 3},
+  "sensors": [{"name": "front", "pose": {"position": [0.2, 0, 0.3]}},
+              {"pose": {"position": [0, 0.2, 0.3], "yaw": 1.5707963267948966}, "field_of_view": 0.25,
+               "radiation_type": "infrared", "max_range": 1.5, "noise": {"stddev": 0.002}}]
+})";
+
+TEST(SensorFileTest, RangeSensorsTakeTheFileDefaultsOrTheirOwn) {
+  const RangeSensorsDescription ring = parseRangeSensors(kSonarRing, "r.json");
+  ASSERT_EQ(ring.sensors.size(), 2u);
+  const RangeSensorDescription &front = ring.sensors[0], &side = ring.sensors[1];
+  EXPECT_EQ(front.name, "front");
+  EXPECT_EQ(front.pose.position, (std::array<double, 3>{0.2, 0, 0.3}));
+  EXPECT_EQ(front.fieldOfView, 0.5);
+  EXPECT_EQ(front.minRange, 0.1);
+  EXPECT_EQ(front.maxRange, 5);
+  EXPECT_EQ(front.radiation, RadiationType::ultrasound);
+  EXPECT_EQ(front.noiseStddev, 0.01);
+  EXPECT_EQ(front.noiseSeed, 3u);
+  EXPECT_EQ(side.name, "range_1");  // unnamed: its place in the ring
+  EXPECT_EQ(side.pose.yaw, 1.5707963267948966);
+  EXPECT_EQ(side.fieldOfView, 0.25);
+  EXPECT_EQ(side.minRange, 0.1);
+  EXPECT_EQ(side.maxRange, 1.5);
+  EXPECT_EQ(side.radiation, RadiationType::infrared);
+  EXPECT_EQ(side.noiseStddev, 0.002);  // its own noise, whole: no seed of the file's
+  EXPECT_EQ(side.noiseSeed, 0u);
+  const RangeSensorsDescription one = parseRangeSensors(
+      R"({"type": "range", "pose": {"position": [0, 0, 0]}, "field_of_view": 3.141592653589793, "min_range": 0,
+          "max_range": 2, "radiation_type": "infrared"})",
+      "r.json");
+  ASSERT_EQ(one.sensors.size(), 1u);
+  EXPECT_EQ(one.sensors[0].name, "range");
+  EXPECT_EQ(one.sensors[0].fieldOfView, std::numbers::pi);  // a half-space: allowed
+  EXPECT_EQ(parseSensorType(kSonarRing, "r.json"), SensorType::range);
+  EXPECT_EQ(parseSensorType(kPlanar, "s.json"), SensorType::lidar);
+}
+
+TEST(SensorFileTest, EachRangeSensorRuleNamesTheKeyAndTheRule) {
+  const auto refusal = [](const std::string& text) {
+    try {
+      parseRangeSensors(text, "r.json");
+    } catch (const SensorError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  const auto ring = [](const std::string& from, const std::string& to) {
+    std::string text = kSonarRing;
+    const std::size_t at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("no " + from);
+    return text.replace(at, from.size(), to);
+  };
+  for (
+      const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+          {ring(R"("field_of_view": 0.5)", R"("field_of_view": 0)"),
+           "r.json: field_of_view: 0 is out of range: the cone's full angle lies in (0, pi] radians"},
+          {ring(R"("field_of_view": 0.5)", R"("field_of_view": -0.2)"), "field_of_view: -0.2 is out of range"},
+          {ring(R"("field_of_view": 0.25)", R"("field_of_view": 3.2)"),
+           "r.json: sensors[1].field_of_view: 3.2 is out of range"},
+          {ring(R"("max_range": 1.5)", R"("max_range": 0.05)"),
+           "r.json: sensors[1].max_range: 0.05 is not above min_range = 0.1 (min_range)"},
+          {ring(R"("min_range": 0.1)", R"("min_range": -1)"), "r.json: min_range: -1 is negative"},
+          {ring(R"("radiation_type": "infrared")", R"("radiation_type": "radar")"),
+           R"(r.json: sensors[1].radiation_type: "radar" is not a radiation type; expected "ultrasound" or "infrared")"},
+          {ring(R"("name": "front", )", R"("name": "range_1", )"), R"(sensors[1].name: "range_1" names two sensors)"},
+          {ring(R"("field_of_view": 0.5, )", ""), R"(r.json: sensors[0]: missing key "field_of_view" (in the entry)"},
+          {ring(R"("name": "front", )", R"("name": "front", "fov": 1, )"), "r.json: sensors[0].fov: unknown key"},
+          {ring(R"("type": "range", )", R"("type": "range", "pose": {"position": [0, 0, 0]}, )"),
+           "r.json: pose: with \"sensors\", each sensor gives its own pose in its entry"},
+          {ring(R"("sensors": [)", R"("sensors": [], "unused": [)"), "unknown key"},
+          {R"({"type": "range", "sensors": []})", "r.json: sensors: the list is empty"},
+          {R"({"type": "lidar"})", R"(r.json: type: "lidar": expected "range")"},
+      }) {
+    EXPECT_THAT(refusal(text), HasSubstr(expected)) << text;
+  }
+  // A lidar's reader refuses a range sensor's file, saying what it is.
+  try {
+    parseSensor(kSonarRing, "r.json");
+    ADD_FAILURE() << "a lidar read a range sensor's file";
+  } catch (const SensorError& error) {
+    EXPECT_THAT(error.what(), HasSubstr(R"(r.json: type: "range": a range sensor's file)"));
+  }
+}
+
 TEST(SensorFileTest, TooManyBeamsAPose) {
   const std::string text = with(R"("samples": 5)", R"("samples": 1048576)");
   const std::string withRings = text.substr(0, text.find(R"("range")")) +

@@ -5,10 +5,12 @@
 #include "cli/counted.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
+#include "io/range_readings.h"
 #include "io/scan_files.h"
 #include "io/scene_file.h"
 #include "io/sensor_file.h"
 #include "robot/lidar.h"
+#include "robot/range_sensors.h"
 #include "robot/scan_plot.h"
 #include "scene/degenerate_objects.h"
 #include "scene/embree_scene.h"
@@ -34,7 +36,63 @@ struct Options {
   std::optional<std::size_t> plotRing;
 };
 
+void warnAboutScene(const io::SceneDescription& description) {
+  for (const io::SceneProfile& profile : description.profiles) {
+    for (const std::string& warning : profile.warnings)
+      std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
+  }
+  for (const std::string& warning : scene::degenerateObjectWarnings(description, false)) {
+    std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
+  }
+}
+
+// Range sensors (sonar, infrared): their readings at every pose as a CSV table.
+void runRange(const Options& options, bool pcdDataGiven) {
+  const std::string& out = options.output;
+  if (out.size() < 4 || out.compare(out.size() - 4, 4, ".csv") != 0) {
+    throw std::runtime_error(out + ": " + options.sensor +
+                             " describes range sensors, whose readings are a CSV table (" + io::kRangeTableHeader +
+                             "): name the output .csv");
+  }
+  if (pcdDataGiven) throw std::runtime_error("--pcd-data applies to a lidar's .pcd scans, not to range sensors");
+  if (!options.plot.empty() || options.plotRing)
+    throw std::runtime_error("--plot draws a lidar's scan; range sensors have no plot here (docs/robot.md draws one)");
+  const io::SceneDescription description = io::readScene(options.scene);
+  warnAboutScene(description);
+  io::RangeSensorsDescription sensors = io::readRangeSensors(options.sensor);
+  const std::vector<io::RobotPose> poses =
+      options.poses.empty() ? std::vector<io::RobotPose>{io::RobotPose{}} : io::readPosesCsv(options.poses);
+  io::OutputSet outputs;
+  outputs.addInput("the scene file", options.scene);
+  for (const io::SceneProfile& profile : description.profiles)
+    outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  outputs.addInput("the sensor file (--sensor)", options.sensor);
+  outputs.addInput("the poses file (--poses)", options.poses);
+  outputs.add("-o", out);
+
+  robot::RangeSensors::Settings settings;
+  settings.mesh = options.geometry == "mesh";
+  settings.slices = options.slices;
+  const std::size_t count = sensors.sensors.size();
+  const robot::RangeSensors ranging(description, std::move(sensors), settings);
+  io::RangeTableWriter writer(outputs.stream(out));
+  std::size_t readings = 0;
+  const auto start = std::chrono::steady_clock::now();
+  ranging.readAll(poses, options.threads, [&](std::uint64_t first, std::span<const io::RangeReading> block) {
+    writer.write(first, count, block);
+    for (const io::RangeReading& r : block) readings += std::isinf(r.range) ? 0 : 1;
+  });
+  outputs.commit();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  std::printf("revolve-lidar: %s x %s: %s in %.3g s (%s, %s geometry)\n", app::counted(poses.size(), "pose").c_str(),
+              app::counted(count, "range sensor").c_str(), app::counted(readings, "reading").c_str(), seconds,
+              app::counted(std::size_t(threads), "thread").c_str(),
+              settings.mesh ? ("mesh, " + std::to_string(settings.slices) + " slices").c_str() : "exact");
+}
+
 void run(const Options& options, bool pcdDataGiven) {
+  if (io::readSensorType(options.sensor) == io::SensorType::range) return runRange(options, pcdDataGiven);
   // Everything that can be checked before tracing is, so that a mistake costs nothing and leaves
   // no output behind.
   const io::ScanFormat format = io::scanFormatFor(options.output);
@@ -43,13 +101,7 @@ void run(const Options& options, bool pcdDataGiven) {
   }
   if (!options.plot.empty()) robot::checkPlotPath(options.plot);
   const io::SceneDescription description = io::readScene(options.scene);
-  for (const io::SceneProfile& profile : description.profiles) {
-    for (const std::string& warning : profile.warnings)
-      std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
-  }
-  for (const std::string& warning : scene::degenerateObjectWarnings(description, false)) {
-    std::fprintf(stderr, "revolve-lidar: warning: %s\n", warning.c_str());
-  }
+  warnAboutScene(description);
   const io::SensorDescription sensor = io::readSensor(options.sensor);
   const io::ScanLayout sweep = io::scanLayout(sensor, 1);
   if (options.plotRing && *options.plotRing >= sweep.rings()) {
@@ -128,17 +180,22 @@ int main(int argc, char** argv) {
   Options options;
   CLI::App app{
       "Simulated laser range-finder scans (ROS LaserScan semantics) of a scene of surfaces of revolution, "
-      "traced exactly by revolve inside Embree."};
+      "traced exactly by revolve inside Embree; or, for a sensor file of \"type\": \"range\", the readings of "
+      "sonar and infrared cones (ROS Range: the nearest surface inside each cone, exact)."};
   app.add_option("scene", options.scene, "scene file (JSON, revolve-render's format)")
       ->required()
       ->check(app::kNonEmpty);
-  app.add_option("--sensor", options.sensor, "sensor file (JSON): pose, horizontal/vertical beams, range, noise")
+  app.add_option("--sensor", options.sensor,
+                 "sensor file (JSON): a lidar (pose, horizontal/vertical beams, range, noise) or range sensors "
+                 "(\"type\": \"range\": pose, field_of_view, min_range, max_range, radiation_type, noise)")
       ->required()
       ->check(app::kNonEmpty);
   app.add_option("--poses", options.poses,
                  "robot poses (CSV, header x,y,z,yaw or x,y,yaw); default: one, at the origin")
       ->check(app::kNonEmpty);
-  app.add_option("-o,--output", options.output, "scan to write: .csv (LaserScan-shaped table) or .pcd (PCD v0.7)")
+  app.add_option("-o,--output", options.output,
+                 "scan to write: .csv (LaserScan-shaped table) or .pcd (PCD v0.7); range sensors: .csv (pose,sensor,"
+                 "range,x,y,z,object)")
       ->required()
       ->check(app::kNonEmpty);
   CLI::Option* pcdData = app.add_option("--pcd-data", options.pcdData,
