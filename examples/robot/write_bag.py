@@ -5,7 +5,7 @@ camera's frame (Image and CameraInfo, rendered by revolve-render) and the robot'
 the sensors' mountings on /tf_static. The poses carry no time: they are stamped --period apart.
 
   PYTHONPATH=build/python /usr/bin/python3 examples/robot/write_bag.py -o out/robot_bag
-  ros2 bag info out/robot_bag        # or open out/robot_bag/robot_bag_0.mcap in Foxglove
+  ros2 bag info out/robot_bag        # or open out/robot_bag/robot_bag.mcap in Foxglove
 
 Needs Debian 13's python3-rosbags (revolve.ros2 says so and this exits 1 without it) and Pillow
 (python3-pil) to read the camera's PNGs. An earlier bag at the output path is replaced.
@@ -54,8 +54,15 @@ def main():
     output.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="frames-", dir=output.parent) as frames:
         # The camera's frames: front_0000.png and front_0000.json (CameraInfo's fields, the pose's time), ...
-        subprocess.run([str(args.render), str(args.scene), "--camera", str(args.camera), "--poses", str(args.poses),
-                        "-o", os.path.join(frames, "front.png"), "--spp", str(args.spp)], check=True, stdout=subprocess.DEVNULL)
+        render = [str(args.render), str(args.scene), "--camera", str(args.camera), "--poses", str(args.poses),
+                  "-o", os.path.join(frames, "front.png"), "--spp", str(args.spp)]
+        if not os.access(render[0], os.X_OK):
+            print(f"{sys.argv[0]}: --render {render[0]}: no such executable (build it: bash scripts/build.sh)", file=sys.stderr)
+            return 1
+        done = subprocess.run(render, stdout=subprocess.DEVNULL)
+        if done.returncode != 0:
+            print(f"{sys.argv[0]}: revolve-render exited {done.returncode} (its message is above)", file=sys.stderr)
+            return 1
         with ros2.BagWriter(output, overwrite=True) as bag:
             bag.write_static_transforms(stamps[0], [
                 ("base_link", "lidar", ros2.sensor_mounting(args.lidar)),

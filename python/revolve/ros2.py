@@ -1,6 +1,6 @@
 """ROS 2 bags of a simulated robot: revolve's scans, range readings and camera frames in a rosbag2.
 
-A bag is a folder (metadata.yaml beside NAME_0.mcap: rosbag2 format version 9, MCAP storage, the
+A bag is a folder (metadata.yaml beside NAME.mcap: rosbag2 format version 9, MCAP storage, the
 message definitions of ROS 2 Jazzy) written through the rosbags library (Debian 13's
 python3-rosbags), which encodes every message (CDR) and the MCAP file:
 
