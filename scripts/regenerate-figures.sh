@@ -52,6 +52,8 @@ mkdir -p out/frames
 build/bin/revolve-render scenes/robot_world.json --camera examples/robot/camera_front.json \
   --poses examples/robot/path.csv -o out/frames/front.png --spp 64
 cp out/frames/front_0003.png docs/camera_frame.png
+# A ring of 8 sonars along the path, read exactly (docs/robot.md, "Range sensors").
+PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_sonar_ring.py docs/sonar_ring.png
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
