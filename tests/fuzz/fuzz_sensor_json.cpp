@@ -5,7 +5,10 @@
 // most a turn, range 0 <= min < max, resolution and stddev >= 0, the footprint and return keys
 // within theirs, points a pose within the limit), whose beam angles (fanAngles) run from min_angle
 // to max_angle without going back. Anything else, or a sanitizer report, is a finding. (A
-// "pattern" names a file, which the fuzzer can only rarely name: patterns are tested apart.)
+// "pattern" names a file, which the fuzzer can only rarely name: patterns are tested apart.) The same
+// text goes to the range sensors' reader ("type": "range"), whose sensors keep theirs: a count
+// within the limit, unique names, field_of_view in (0, pi], 0 <= min_range < max_range finite,
+// noise finite with stddev >= 0, positions and angles as the lidar's.
 #include "fuzz_checks.h"
 #include "geometry/ray_limits.h"
 #include "io/sensor_file.h"
@@ -18,8 +21,34 @@
 
 using namespace revolve;
 
+namespace {
+
+void checkRangeSensors(std::string_view text) {
+  io::RangeSensorsDescription ring;
+  try {
+    ring = io::parseRangeSensors(text, "fuzz.json");
+  } catch (const io::SensorError& error) {
+    fuzz::checkOneLineMessage(error.what());
+    return;
+  }
+  FUZZ_CHECK(!ring.sensors.empty() && ring.sensors.size() <= io::kMaxRangeSensors);
+  for (std::size_t i = 0; i < ring.sensors.size(); ++i) {
+    const io::RangeSensorDescription& s = ring.sensors[i];
+    FUZZ_CHECK(!s.name.empty());
+    for (std::size_t j = 0; j < i; ++j) FUZZ_CHECK(ring.sensors[j].name != s.name);
+    FUZZ_CHECK(s.fieldOfView > 0 && s.fieldOfView <= std::numbers::pi);
+    FUZZ_CHECK(s.minRange >= 0 && s.minRange < s.maxRange && std::isfinite(s.maxRange));
+    FUZZ_CHECK(s.noiseStddev >= 0 && std::isfinite(s.noiseStddev) && std::isfinite(s.noiseMean));
+    for (const double p : s.pose.position) FUZZ_CHECK(std::abs(p) <= app::kMaxWorldCoordinate);
+    for (const double a : {s.pose.yaw, s.pose.pitch, s.pose.roll}) FUZZ_CHECK(std::abs(a) <= 2 * std::numbers::pi);
+  }
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
+  checkRangeSensors(text);
   io::SensorDescription sensor;
   try {
     sensor = io::parseSensor(text, "fuzz.json");
