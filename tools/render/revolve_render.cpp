@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -177,6 +178,24 @@ void checkKajiya(const Options& options, const io::SceneDescription& description
   }
 }
 
+// The scene as it is traced: splines within --tolerance made polylines (for an image `height`
+// pixels high), Kajiya's limit checked, built into Embree; then the scene's warnings (of the
+// profiles as traced), before the long work: every refusal before this point is the run's one line.
+struct PreparedScene {
+  std::vector<render::CurvePolyline> curves;  // the curves traced as polylines (--stats reports them)
+  std::unique_ptr<scene::EmbreeScene> built;
+};
+
+PreparedScene prepareScene(const Options& options, io::SceneDescription& description, int height) {
+  PreparedScene prepared;
+  if (options.tolerance) prepared.curves = render::applyCurveTolerance(description, *options.tolerance, height);
+  checkKajiya(options, description);
+  prepared.built = std::make_unique<scene::EmbreeScene>(description, buildSettings(options));
+  printWarnings(sceneWarnings(description));
+  printWarnings(render::glassWarnings(description));
+  return prepared;
+}
+
 // Prints the object under the pixel (as the GLBot simulator's scene editor): index, name, hit point, distance.
 void pickObject(const Options& options, const io::SceneDescription& description, int width, int height) {
   const auto [x, y] = parsePixel(options.pick, width, height);
@@ -263,12 +282,8 @@ void renderPath(const Options& options) {
   settings.height = camera.height;
   app::requireMemory(40.0 * settings.width * settings.height, "an image of " + std::to_string(settings.width) + " x " +
                                                                   std::to_string(settings.height) + " pixels");
-  std::vector<render::CurvePolyline> curves;
-  if (options.tolerance) curves = render::applyCurveTolerance(description, *options.tolerance, settings.height);
-  checkKajiya(options, description);
-  const scene::EmbreeScene built(description, buildSettings(options));
-  printWarnings(sceneWarnings(description));
-  printWarnings(render::glassWarnings(description));
+  const PreparedScene prepared = prepareScene(options, description, settings.height);
+  const scene::EmbreeScene& built = *prepared.built;
   const std::array<double, 9> k = robot::intrinsics(camera);
   const float scale = float(std::exp2(options.exposure));
   for (std::size_t i = 0; i < poses.size(); ++i) {
@@ -381,14 +396,9 @@ void run(const Options& options) {
   app::requireMemory(36.0 * settings.width * settings.height, "an image of " + std::to_string(settings.width) + " x " +
                                                                   std::to_string(settings.height) + " pixels");
 
-  std::vector<render::CurvePolyline> curves;
-  if (options.tolerance) curves = render::applyCurveTolerance(description, *options.tolerance, settings.height);
-  checkKajiya(options, description);
-  const scene::EmbreeScene built(description, buildSettings(options));
-  // Every refusal before this point is the run's one line; the scene's warnings now (of the
-  // profiles as traced), before the long work.
-  printWarnings(sceneWarnings(description));
-  printWarnings(render::glassWarnings(description));
+  const PreparedScene prepared = prepareScene(options, description, settings.height);
+  const scene::EmbreeScene& built = *prepared.built;
+  const std::vector<render::CurvePolyline>& curves = prepared.curves;
   render::ProgressReport progress;
   const render::RenderResult result =
       render::render(description, built, settings, [&](double fraction) { progress.update(fraction); });
