@@ -240,6 +240,55 @@ py::array countIntersections(Scene& scene, py::handle rays, py::handle nthreads)
   return counts;
 }
 
+py::dict listIntersections(Scene& scene, py::handle rays, py::handle nthreads) {
+  const QueryArray in = queryArray(rays, "rays", 6, "ox, oy, oz, dx, dy, dz");
+  const int threads = threadsArgument(nthreads, "nthreads", true);
+  std::vector<Scene::Crossing> crossings;
+  std::vector<std::uint32_t> splits;
+  std::optional<std::size_t> refused;
+  try {
+    py::gil_scoped_release release;
+    refused = scene.listIntersections(
+        in.data, in.count,
+        [&](std::size_t total) {
+          crossings.resize(total);
+          return crossings.data();
+        },
+        splits, threads);
+  } catch (const std::length_error& error) {
+    throw py::value_error(std::string("rays: ") + error.what());
+  }
+  if (refused) refuse(in, "rays", *refused, true);
+  const py::ssize_t n = py::ssize_t(crossings.size());
+  py::array_t<std::uint32_t> raySplits(py::ssize_t(splits.size())), rayIds(n), geometryIds(n), primitiveIds(n);
+  py::array_t<float> tHit(n), uvs(std::vector<py::ssize_t>{n, 2});
+  std::copy(splits.begin(), splits.end(), raySplits.mutable_data());
+  std::uint32_t* ray = rayIds.mutable_data();
+  std::uint32_t* geometry = geometryIds.mutable_data();
+  std::uint32_t* primitive = primitiveIds.mutable_data();
+  float* t = tHit.mutable_data();
+  float* uv = uvs.mutable_data();
+  for (std::size_t r = 0; r + 1 < splits.size(); ++r) {
+    for (std::size_t k = splits[r]; k < splits[r + 1]; ++k) {
+      const Scene::Crossing& c = crossings[k];
+      ray[k] = std::uint32_t(r);
+      geometry[k] = c.geometry;
+      primitive[k] = c.primitive;
+      t[k] = c.t;
+      uv[2 * k] = c.u;
+      uv[2 * k + 1] = c.v;
+    }
+  }
+  py::dict result;
+  result["ray_splits"] = raySplits;
+  result["ray_ids"] = rayIds;
+  result["geometry_ids"] = geometryIds;
+  result["primitive_ids"] = primitiveIds;
+  result["primitive_uvs"] = uvs;
+  result["t_hit"] = tHit;
+  return result;
+}
+
 struct ClosestArrays {
   py::array_t<float> points, uv, normal, distance;
   py::array_t<std::uint32_t> geometry, primitive;
@@ -325,6 +374,13 @@ Raises ProfileError (a ValueError) naming the point and the rule for a bad profi
             "Whether each ray hits anything with tnear <= t <= tfar (bool array).");
   scene.def("count_intersections", &countIntersections, py::arg("rays"), py::arg("nthreads") = py::int_(0),
             "The number of surface crossings along each ray (t >= 0), int32 array.");
+  scene.def("list_intersections", &listIntersections, py::arg("rays"), py::arg("nthreads") = py::int_(0),
+            R"(Every surface crossing along each ray (t >= 0), as Open3D 0.19's list_intersections: a dict of
+ray_splits (uint32, rays + 1: ray i's crossings are [ray_splits[i], ray_splits[i + 1]), rays taken in
+C order whatever their leading shape), ray_ids, geometry_ids, primitive_ids (uint32), t_hit (float32)
+and primitive_uvs (float32, (n, 2)), each ray's crossings nearest first (ties by geometry, then
+primitive). Its crossings are count_intersections' own: a surface of revolution's each crossing
+(a tangent touch as the boundary rules decide), a mesh's edge shared by two triangles once.)");
   scene.def(
       "compute_closest_points",
       [](Scene& s, py::handle points, py::handle threads) {

@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 namespace revolve::python {
 
@@ -21,11 +23,15 @@ namespace {
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 // count_intersections: the counter of the ray the calling thread traces (a filter function runs on
-// the thread that called rtcIntersect1), and the crossing it saw last.
+// the thread that called rtcIntersect1), and the crossing it saw last. list_intersections traces
+// each ray a second time with `list` set: its crossings are written there, `capacity` of them at
+// most (the count of the first pass, which the same traversal repeats).
 struct CrossingCount {
   std::int32_t count = 0;
   unsigned geometry = RTC_INVALID_GEOMETRY_ID;
   float t = 0;
+  RaycastingScene::Crossing* list = nullptr;
+  std::int32_t capacity = 0;
 };
 thread_local CrossingCount* crossings = nullptr;
 
@@ -43,6 +49,10 @@ void countCrossing(const RTCFilterFunctionNArguments* args) {
     const float t = RTCRayN_tfar(args->ray, args->N, i);
     CrossingCount& c = *crossings;
     if (geometry != c.geometry || t != c.t) {
+      if (c.list != nullptr && c.count < c.capacity) {
+        c.list[c.count] = {t, geometry, RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
+                           RTCHitN_v(args->hit, args->N, i)};
+      }
       ++c.count;
       c.geometry = geometry, c.t = t;
     }
@@ -283,6 +293,49 @@ std::optional<std::size_t> RaycastingScene::testOcclusions(const float* rays, st
     query.occluded(top, ray);
     out[i] = ray.tfar == -kInfinity;
   });
+}
+
+std::optional<std::size_t> RaycastingScene::listIntersections(const float* rays, std::size_t count,
+                                                              const std::function<Crossing*(std::size_t)>& allocate,
+                                                              std::vector<std::uint32_t>& splits, int threads) {
+  std::vector<std::int32_t> counts(count);
+  const QueryLock lock = readyForQueries(true);
+  RTCScene counting = counting_;
+  const auto trace = [&](embree::RayQuery& query, const float* r, CrossingCount& tally) {
+    crossings = &tally;
+    RTCRayHit rh = embree::newRayHit(r[0], r[1], r[2], r[3], r[4], r[5], 0.0f, kInfinity);
+    query.intersect(counting, rh);
+    crossings = nullptr;
+  };
+  const std::optional<std::size_t> refused =
+      forEach(rays, count, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
+        CrossingCount tally;
+        trace(query, r, tally);
+        counts[i] = tally.count;
+      });
+  if (refused) return refused;
+  splits.assign(count + 1, 0);
+  std::uint64_t total = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    splits[i] = std::uint32_t(total);
+    total += std::uint64_t(counts[i]);
+    if (total > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error(
+          "the rays cross surfaces more than 2^32 - 1 times (Open3D's uint32 ray_splits); split them");
+  }
+  splits[count] = std::uint32_t(total);
+  Crossing* out = allocate(std::size_t(total));
+  forEach(rays, count, true, threads, [&](embree::RayQuery& query, std::size_t i, const float* r) {
+    CrossingCount tally;
+    tally.list = out + splits[i];
+    tally.capacity = counts[i];
+    trace(query, r, tally);
+    // Nearest first; equal t by geometry, then primitive, so that the order is the same every run.
+    std::sort(tally.list, tally.list + std::min(tally.count, tally.capacity), [](const Crossing& a, const Crossing& b) {
+      return a.t != b.t ? a.t < b.t : a.geometry != b.geometry ? a.geometry < b.geometry : a.primitive < b.primitive;
+    });
+  });
+  return std::nullopt;
 }
 
 std::optional<std::size_t> RaycastingScene::countIntersections(const float* rays, std::size_t count, std::int32_t* out,

@@ -17,10 +17,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <shared_mutex>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace revolve::python {
 
@@ -58,6 +60,19 @@ class RaycastingScene {
   // Hits along the whole ray (t >= 0), each surface crossing once (Open3D's rule for a hit on an
   // edge shared by two triangles of a mesh).
   std::optional<std::size_t> countIntersections(const float* rays, std::size_t count, std::int32_t* out, int threads);
+  // Every crossing countIntersections counts, as Open3D's list_intersections lists them: `splits`
+  // (count + 1 offsets: ray i's crossings are [splits[i], splits[i + 1])) and the crossings, each
+  // ray's nearest first, written where allocate(total) says (called once, between the two passes:
+  // the crossings are counted, then traced again and written). Throws std::length_error when the
+  // total exceeds 2^32 - 1.
+  struct Crossing {
+    float t;
+    std::uint32_t geometry, primitive;
+    float u, v;
+  };
+  std::optional<std::size_t> listIntersections(const float* rays, std::size_t count,
+                                               const std::function<Crossing*(std::size_t)>& allocate,
+                                               std::vector<std::uint32_t>& splits, int threads);
 
   struct Closest {
     float* point;  // 3 a point
