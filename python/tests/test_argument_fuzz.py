@@ -220,7 +220,7 @@ def make_case(seed, i, files, objects):
     can, lidar, tool_scene = objects["can"], objects["lidar"], objects["scene"]
     spline_points = {"quadratic": 3, "bezier": 4}
     function = m.pick(["add_revolution", "add_revolution", "add_triangles", "load", "cast_rays", "test_occlusions",
-                       "count_intersections", "compute_closest_points", "compute_distance", "compute_signed_distance",
+                       "count_intersections", "list_intersections", "compute_closest_points", "compute_distance", "compute_signed_distance",
                        "compute_occupancy", "create_rays_pinhole", "Scene", "Lidar", "Lidar.scan", "ScanFile", "ScanFile.write",
                        "cylinder_clearance", "read_poses", "scan_shard", "shard_poses", "tessellate"])
     args, kwargs = [], {}
@@ -247,7 +247,7 @@ def make_case(seed, i, files, objects):
     elif function == "load":
         args = [m.path("scene")]
         call = lambda: revolve.RaycastingScene().load(*args)  # noqa: E731
-    elif function in ("cast_rays", "test_occlusions", "count_intersections"):
+    elif function in ("cast_rays", "test_occlusions", "count_intersections", "list_intersections"):
         args = [m.array(6, rows=(1, 5))]
         maybe("nthreads", m.threads, 0.5)
         if function == "test_occlusions":

@@ -58,6 +58,7 @@ def _stress(mode, folder):
         "cast_rays": lambda n: s.cast_rays(rays, nthreads=n),
         "test_occlusions": lambda n: s.test_occlusions(rays, nthreads=n),
         "count_intersections": lambda n: s.count_intersections(rays, nthreads=n),
+        "list_intersections": lambda n: s.list_intersections(rays, nthreads=n),
         "compute_closest_points": lambda n: s.compute_closest_points(points, nthreads=n),
         "compute_distance": lambda n: s.compute_distance(points, nthreads=n),
         "compute_signed_distance": lambda n: s.compute_signed_distance(points, nthreads=n),
