@@ -11,6 +11,9 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace revolve::robot {
 namespace {
