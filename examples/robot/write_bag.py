@@ -74,7 +74,7 @@ def main():
                 bag.write_robot_pose(stamp, poses[i])
                 bag.write_point_cloud(stamp, scan, i)
                 bag.write_ranges(stamp, readings["range"][i], sonars.names, sonars.field_of_view, sonars.min_range,
-                                 sonars.max_range, sonars.radiation_type)
+                                 sonars.max_range, sonars.radiation_type, variance=sonars.noise_stddev ** 2)
                 image, info = ros2.read_camera_frame(os.path.join(frames, f"front_{i:04d}.json"))
                 bag.write_image(stamp, image)
                 bag.write_camera_info(stamp, info)

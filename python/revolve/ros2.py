@@ -508,12 +508,14 @@ class BagWriter:
             is_dense=bool(np.all(~np.isinf(np.asarray(scan["ranges"][pose])))))
         self._write(_topic(topic), "sensor_msgs/msg/PointCloud2", message, ns)
 
-    def write_ranges(self, stamp, ranges, names, field_of_view, min_range, max_range, radiation_type, topic="/range"):
+    def write_ranges(self, stamp, ranges, names, field_of_view, min_range, max_range, radiation_type, topic="/range",
+                     variance=None):
         """One Range message a sensor, on `topic`/NAME with frame_id NAME (the sensor's frame, whose
         +X is the cone's axis): ranges (S,) the readings (inf: nothing within range, written +inf as
         REP 117 has it), and the sensors' metadata as RangeSensors gives it: names (S,), field_of_view
         (S,) the full cone angle in radians, min_range and max_range (S,), radiation_type (S,)
-        "ultrasound" or "infrared". Written as float32; variance 0 (the message's "unknown")."""
+        "ultrasound" or "infrared"; variance (S,) the readings' variance in m^2 (RangeSensors'
+        noise_stddev squared), or None for 0, the message's "unknown". Written as float32."""
         self._require_open()
         ns = _stamp_ns(stamp)
         readings = np.asarray(ranges, dtype=np.float64) if not isinstance(ranges, (str, bytes)) else np.array([])
@@ -523,7 +525,10 @@ class BagWriter:
         if isinstance(names, str) or len(names) != count:
             raise ValueError(f"names: {0 if isinstance(names, str) else len(names)} names for {count} readings; expected one a sensor")
         columns = {}
-        for key, value in (("field_of_view", field_of_view), ("min_range", min_range), ("max_range", max_range)):
+        if variance is None:
+            variance = np.zeros(count)
+        for key, value in (("field_of_view", field_of_view), ("min_range", min_range), ("max_range", max_range),
+                           ("variance", variance)):
             array = np.asarray(value, dtype=np.float64)
             if array.shape != (count,):
                 raise ValueError(f"{key}: shape {array.shape}; expected ({count},), one a sensor")
@@ -539,6 +544,9 @@ class BagWriter:
                 raise ValueError(f"min_range[{i}] = {low!r}: must be finite and at least 0")
             if not (math.isfinite(high) and high > low):
                 raise ValueError(f"max_range[{i}] = {high!r}: must be finite and above min_range = {low!r}")
+            spread = float(columns["variance"][i])
+            if not (math.isfinite(spread) and spread >= 0):
+                raise ValueError(f"variance[{i}] = {spread!r}: must be finite and at least 0")
             if radiation_type[i] not in _RADIATION:
                 raise ValueError(f"radiation_type[{i}] = {radiation_type[i]!r}: expected \"ultrasound\" or \"infrared\"")
             reading = float(readings[i])
@@ -551,7 +559,8 @@ class BagWriter:
             message = self._types["sensor_msgs/msg/Range"](
                 header=self._header(ns, names[i]), radiation_type=_RADIATION[radiation_type[i]],
                 field_of_view=float(columns["field_of_view"][i]), min_range=float(columns["min_range"][i]),
-                max_range=float(columns["max_range"][i]), range=float(readings[i]), variance=0.0)
+                max_range=float(columns["max_range"][i]), range=float(readings[i]),
+                variance=float(columns["variance"][i]))
             self._write(f"{base.rstrip('/')}/{names[i]}", "sensor_msgs/msg/Range", message, ns)
 
     def write_image(self, stamp, image, frame_id="camera_optical", topic="/camera/image_raw"):

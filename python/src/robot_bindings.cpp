@@ -635,6 +635,15 @@ after the objects, -1 for none).)")
                                return a;
                              })
       .def_property_readonly(
+          "noise_stddev",
+          [](const PyRangeSensors& s) {
+            py::array_t<double> a(py::ssize_t(s.sensors.sensors.size()));
+            for (std::size_t i = 0; i < s.sensors.sensors.size(); ++i)
+              a.mutable_at(py::ssize_t(i)) = s.sensors.sensors[i].noiseStddev;
+            return a;
+          },
+          "each sensor's Gaussian range noise, metres (0: none); squared, a Range message's variance")
+      .def_property_readonly(
           "mounting",
           [](const PyRangeSensors& s) {
             const py::ssize_t n = py::ssize_t(s.sensors.sensors.size());

@@ -188,6 +188,7 @@ SONARS = {
     "min_range": np.array([0.15] * 8 + [0.04, 0.04]),
     "max_range": np.array([5.0] * 8 + [0.8, 0.8]),
     "radiation_type": ["ultrasound"] * 8 + ["infrared"] * 2,
+    "variance": np.array([1e-4] * 8 + [0.0, 0.0]),  # the sonars' noise, 0.01 m, squared; the rangers' unknown
     "mounting": np.array([[0.2 * math.cos(a), 0.2 * math.sin(a), 0.3, a, 0.0, 0.0] for a in np.arange(8) * math.pi / 4]
                          + [[0.1, 0.15, 0.1, 1.2, 0.05, 0.0], [0.1, -0.15, 0.1, -1.2, 0.05, 0.0]]),
 }
@@ -209,7 +210,7 @@ def test_range_messages_are_the_sensors_metadata_and_readings(tmp_path):
         bag.write_static_transforms(stamps[0], [("base_link", n, m) for n, m in zip(SONARS["names"], SONARS["mounting"])])
         for stamp, reading in zip(stamps, readings):
             bag.write_ranges(stamp, reading, SONARS["names"], SONARS["field_of_view"], SONARS["min_range"],
-                             SONARS["max_range"], SONARS["radiation_type"])
+                             SONARS["max_range"], SONARS["radiation_type"], variance=SONARS["variance"])
     messages, types, _ = read_bag(tmp_path / "bag")
     assert sorted(types) == sorted(["/tf_static"] + [f"/range/{n}" for n in SONARS["names"]])
     for s, name in enumerate(SONARS["names"]):
@@ -223,7 +224,7 @@ def test_range_messages_are_the_sensors_metadata_and_readings(tmp_path):
             for field in ("field_of_view", "min_range", "max_range"):
                 assert getattr(m, field) == np.float32(SONARS[field][s]), (name, field)
             assert m.range == np.float32(readings[p, s])
-            assert m.variance == 0
+            assert m.variance == np.float32(SONARS["variance"][s])
         t = static_transforms(messages)[("base_link", name)]
         x, y, z, yaw, pitch, roll = SONARS["mounting"][s]
         assert [t.transform.translation.x, t.transform.translation.y, t.transform.translation.z] == [x, y, z]
@@ -328,6 +329,7 @@ BAD_CALLS = [
     (lambda b: _ranges(b, names=["a", "b", "a"]), ValueError, r"repeat a name"),
     (lambda b: _ranges(b, min_range=[0.1, 5.0, 0.1]), ValueError, r"max_range\[1\] = 4.0: must be finite and above min_range = 5.0"),
     (lambda b: _ranges(b, max_range=[4.0, 4.0]), ValueError, r"max_range: shape \(2,\); expected \(3,\)"),
+    (lambda b: _ranges(b, variance=[0.0, -1.0, 0.0]), ValueError, r"variance\[1\] = -1.0: must be finite and at least 0"),
     (lambda b: _ranges(b, stamp=0.0), ValueError, r"stamp = 0.0 s: a ROS 2 stamp lies in \(0, 2\^31\)"),
     (lambda b: _ranges(b, stamp=float("inf")), ValueError, r"stamp = inf: must be finite"),
     (lambda b: _ranges(b, stamp=2.0**31), ValueError, r"stamp = 2147483648.0 s"),
