@@ -9,9 +9,10 @@
 namespace revolve::app {
 namespace {
 
-// Polynomials are built and solved in long double: their coefficients are sums of products of up to
-// ten coordinates, and the roots are found to the last bit of that precision (x86's 64-bit
-// significand), so that double-precision points come out of them with double's rounding alone.
+// Polynomials are built in long double from the double inputs (the cone's basis, the profile's
+// points) and solved in long double: their coefficients are sums of products of up to ten
+// coordinates, and the roots are bisected to the last bit of long double (x86's 64-bit significand),
+// so that the points come out of them with little more than their inputs' double rounding.
 using Real = long double;
 
 // A polynomial of degree <= 8: c[0] + c[1] t + ... + c[8] t^8.
@@ -145,10 +146,12 @@ Vec3d boundaryDirection(const SensorCone& cone, int half, Real t) {
 }
 
 // The roots s >= 0 of a s^2 + b s + c = 0 (in long double). A discriminant below zero by no more
-// than its own rounding bound (a few units in the last place of b^2 + 4 |a c|) is a tangent ray
-// touching the surface: taken as zero, so that a cone whose boundary grazes a surface sees it.
+// than its rounding bound is a tangent ray touching the surface: taken as zero, so that a cone whose
+// boundary grazes a surface sees it. The bound: a, b, c are products of the boundary direction,
+// rounded to double (2^-53 relative), so b^2 - 4ac is known to a few units of double's epsilon in
+// b^2 + 4 |a c|; 8 of them.
 int nonNegativeRoots(Real a, Real b, Real c, Real* out) {
-  constexpr Real kUnit = std::numeric_limits<Real>::epsilon();
+  constexpr Real kUnit = std::numeric_limits<double>::epsilon();
   int count = 0;
   if (a == 0) {
     if (b != 0 && -c / b >= 0) out[count++] = -c / b;
@@ -249,10 +252,18 @@ void boundaryOfFlatSegment(const SensorCone& cone, const Segment& g, ConeNearest
 // The circle of radius r > 0 at height z (a profile vertex swept): the distance from p is least at
 // its point in p's meridian half-plane and greatest opposite, so on an arc of the circle inside the
 // cone it is least at one of those two or at an end of the arc, where the circle crosses the cone's
-// boundary. With x(phi) = (r cos phi, r sin phi, z):
-//   (x - p) . w = alpha cos phi + beta sin phi + gamma,   |x - p|^2 = delta + eps cos phi + zeta sin phi,
-// and the crossings solve ((x - p) . w)^2 = cos^2 a |x - p|^2 with (x - p) . w >= 0 (not the cone's
-// mirror image): a quartic in t = tan(phi / 2), each half-turn on t in [-1, 1].
+// boundary: ((x - p) . w)^2 = cos^2 a |x - p|^2 with (x - p) . w >= 0 (not the cone's mirror
+// image). The circle is taken from its point x0 = r e nearest p (e: p's meridian direction, f: e
+// turned a quarter about z), psi the angle from there and t = tan(psi / 2), so that every
+// coefficient is a difference computed before it is small (x0 - p, not x - p from far-apart
+// values): with w1 = 1 + t^2, x - x0 = r (-2 t^2 e + 2 t f) / w1, and
+//   (x - p) . w = L(t) / w1,     L = g w1 - 2 r (e . w) t^2 + 2 r (f . w) t,   g = (x0 - p) . w,
+//   |x - p|^2  = Q(t) / w1,      Q = d0^2 w1 + 4 r rho t^2,                     d0 = |x0 - p|,
+// so the crossings are the roots of the quartic L^2 - cos^2 a Q w1 (psi in [-pi/2, pi/2]; the other
+// half, psi + pi, has x - x0 = -r (2 e + 2 t f) / w1: L = g w1 - 2 r (e . w) - 2 r (f . w) t, Q = d0^2
+// w1 + 4 r rho). Each root, and each stationary point (a crossing where the circle touches the
+// boundary, or every crossing of the half-space, cos a = 0, is a double root), is kept when its point
+// lies on the boundary to within the rounding of its computation (SensorCone::onBoundary).
 void nearestOnCircle(const SensorCone& cone, double r, double z, const Vec3d& meridian, ConeNearest& best) {
   const Vec3d& p = cone.apex();
   const Vec3d& w = cone.axis();
@@ -260,24 +271,26 @@ void nearestOnCircle(const SensorCone& cone, double r, double z, const Vec3d& me
     const Vec3d x{side * r * meridian[0], side * r * meridian[1], z};
     if (cone.contains(x)) best.offer(norm(minus(x, p)), x);
   }
-  const Real c2 = Real(cone.cosHalf()) * cone.cosHalf();
+  const Vec3d e = meridian, f{-meridian[1], meridian[0], 0};
+  const double rho = std::hypot(p[0], p[1]);
+  const Real radial = Real(r) - rho, vertical = Real(z) - p[2];  // x0 - p = radial e + vertical z
+  const Real g = radial * dot(e, w) + vertical * w[2], d2 = radial * radial + vertical * vertical;
+  const Real ew = dot(e, w), fw = dot(f, w), c2 = Real(cone.cosHalf()) * cone.cosHalf();
+  const Poly w1 = poly({1, 0, 1});
   for (int half = 0; half < 2; ++half) {
-    const Real sign = half == 0 ? 1 : -1;
-    const Real alpha = sign * r * w[0], beta = sign * r * w[1];
-    const Real gamma = (Real(z) - p[2]) * w[2] - Real(p[0]) * w[0] - Real(p[1]) * w[1];
-    const Real delta = Real(r) * r + Real(p[0]) * p[0] + Real(p[1]) * p[1] + (Real(z) - p[2]) * (Real(z) - p[2]);
-    const Real eps = sign * -2 * Real(r) * p[0], zeta = sign * -2 * Real(r) * p[1];
-    const Poly l = poly({alpha + gamma, 2 * beta, gamma - alpha});
-    const Poly q = poly({delta + eps, 2 * zeta, 2 * delta, 2 * zeta, delta - eps});
-    const Poly crossing = l * l + (-c2) * q;
+    const Poly l =
+        half == 0 ? poly({g, 2 * r * fw, g - 2 * r * ew}) : poly({g - 2 * r * ew, -2 * r * fw, g - 2 * r * ew});
+    const Poly q = half == 0 ? poly({d2, 0, d2 + 4 * Real(r) * rho}) : poly({d2 + 4 * Real(r) * rho, 0, d2});
+    const Poly crossing = l * l + (-c2) * (q * w1);
     Real t[8];
-    const int roots = realRoots(crossing, t, false);
-    for (int i = 0; i < roots; ++i) {
-      const Real w1 = 1 + t[i] * t[i];
-      const double cosPhi = double(sign * (1 - t[i] * t[i]) / w1), sinPhi = double(sign * 2 * t[i] / w1);
-      const Vec3d x{r * cosPhi, r * sinPhi, z};
-      const Vec3d toX = minus(x, p);
-      if (dot(toX, w) >= 0) best.offer(norm(toX), x);
+    const int n = realRoots(crossing, t, true);
+    for (int i = 0; i < n; ++i) {
+      const Real tt = t[i] * t[i], den = 1 + tt;
+      // x - x0 along e and f: the first half's -2 r t^2 / w1 and 2 r t / w1; the second's -2 r / w1, -2 r t / w1.
+      const Real alongE = half == 0 ? -2 * r * tt / den : -2 * r / den, alongF = (half == 0 ? 2 : -2) * r * t[i] / den;
+      const Vec3d x{double(r * e[0] + alongE * e[0] + alongF * f[0]), double(r * e[1] + alongE * e[1] + alongF * f[1]),
+                    z};
+      if (cone.onBoundary(x)) best.offer(norm(minus(x, p)), x);
     }
   }
 }
@@ -311,13 +324,26 @@ bool SensorCone::contains(const Vec3d& x) const {
   return dot(d, axis_) >= norm(d) * cos_;
 }
 
+bool SensorCone::onBoundary(const Vec3d& x) const {
+  const Vec3d d = minus(x, apex_);
+  const double distance = norm(d), along = dot(d, axis_);
+  // A crossing's point comes from double inputs through long double roots: within a few hundred
+  // units of 2^-53 of the coordinates' size for a simple root; 2^-40 of it (2^13 units) leaves room
+  // for a nearly double one. And 2^-30 of the distance, an angle of 2^-30 radians: the stationary
+  // point between two crossings that close (a cone within 2^-30 of a half-space, a circle barely
+  // dipping into the boundary) stands for both.
+  const double tolerance = 0x1p-40 * std::max(norm(x), norm(apex_)) + 0x1p-30 * distance;
+  return along >= -tolerance && std::abs(along - distance * cos_) <= tolerance;
+}
+
 bool SensorCone::mayReach(const Vec3d& centre, double radius, double within) const {
   const Vec3d d = minus(centre, apex_);
   const double distance = norm(d);
   if (distance - radius >= within) return false;
   if (distance <= radius) return true;
-  const double beta = std::acos(std::clamp(dot(d, axis_) / distance, -1.0, 1.0));
-  // 2^-30 radians of slack: far above the rounding of acos and asin (a few units in 2^-52).
+  // The angle from the axis by atan2, accurate at every angle (acos loses half the digits near 0).
+  const double beta = std::atan2(norm(cross(d, axis_)), dot(d, axis_));
+  // 2^-30 radians of slack: far above the rounding of atan2 and asin (a few units in 2^-52).
   return beta <= halfAngle_ + std::asin(radius / distance) + 0x1p-30;
 }
 
@@ -384,17 +410,21 @@ void nearestOnTriangle(const std::array<Vec3d, 3>& triangle, const SensorCone& c
       const Vec3d x = plus(a, scaled(nearest, e));
       if (cone.contains(x)) best.offer(norm(minus(x, p)), x);
     }
-    // ((pa + l e) . w)^2 - cos^2 a |pa + l e|^2 = 0, quadratic in l, on the cone (not its mirror).
-    const double ew = dot(e, w), aw = dot(pa, w);
-    const Real qa = Real(ew) * ew - c2 * length2, qb = 2 * (Real(aw) * ew - c2 * dot(pa, e)),
-               qc = Real(aw) * aw - c2 * dot(pa, pa);
+    // Where the edge crosses the cone's boundary: from the point f of its line nearest p (so that
+    // the coefficients are as small as the distances they stand for), x = f + m e, and
+    // ((f - p + m e) . w)^2 - cos^2 a (|f - p|^2 + m^2 |e|^2) = 0 (f - p is square to e), a quadratic
+    // in m; each root and the stationary point (the double root of a half-space's crossing, or of an
+    // edge touching the boundary) kept when its point lies on the boundary (SensorCone::onBoundary).
+    const Vec3d foot = plus(a, scaled(nearest, e)), fromApex = minus(foot, p);
+    const double fw = dot(fromApex, w), ew = dot(e, w);
+    const Real qa = Real(ew) * ew - c2 * length2, qb = 2 * Real(fw) * ew,
+               qc = Real(fw) * fw - c2 * dot(fromApex, fromApex);
     const Real coefficients[3] = {qc, qb, qa};
-    Real l[4];
-    const int n = realRoots(coefficients, 2, 0, 1, l, false);
+    Real m[4];
+    const int n = realRoots(coefficients, 2, -nearest, 1 - nearest, m, true);
     for (int i = 0; i < n; ++i) {
-      const Vec3d x = plus(a, scaled(double(l[i]), e));
-      const Vec3d toX = minus(x, p);
-      if (dot(toX, w) >= 0) best.offer(norm(toX), x);
+      const Vec3d x = plus(foot, scaled(double(m[i]), e));
+      if (cone.onBoundary(x)) best.offer(norm(minus(x, p)), x);
     }
   }
 

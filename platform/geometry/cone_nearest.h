@@ -13,9 +13,10 @@
 //     meridian plane; a triangle's edge: the nearest point of the segment), or a vertex;
 //   on the cone's boundary: a point where the distance along the patch's curve of intersection
 //     with the cone is stationary, or where that curve meets a patch edge.
-// Every candidate is a point of the surface inside the cone (up to rounding), so the least of them
-// is the reading, exact to double rounding; extra candidates (added where a degenerate case makes a
-// whole circle stationary) can only be as far or farther.
+// Every candidate is a point of the surface inside the cone (those on its boundary checked to lie on
+// it, within the rounding of their computation), so the least of them is the reading, exact to
+// double rounding; extra candidates (added where a degenerate case makes a whole circle stationary)
+// can only be as far or farther.
 #pragma once
 
 #include "geometry/vec3d.h"
@@ -44,6 +45,9 @@ class SensorCone {
   const Vec3d& v() const { return v_; }
   // Whether x lies inside (or on) the cone, by the exact comparison of rounded values.
   bool contains(const Vec3d& x) const;
+  // Whether x, computed as a point where a surface crosses the cone's boundary, lies on it (not on
+  // its mirror image) to within the rounding of that computation (cone_nearest.cpp says how much).
+  bool onBoundary(const Vec3d& x) const;
   // Whether a ball of `radius` about `centre` may reach into the cone nearer than `within` to the
   // apex (conservative: false only when it cannot).
   bool mayReach(const Vec3d& centre, double radius, double within) const;

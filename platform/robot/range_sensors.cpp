@@ -108,9 +108,13 @@ RangeReading RangeSensors::read(std::size_t index, const io::RobotPose& pose, st
     if (!cone.mayReach(revolution.centre, revolution.radius, best.distance)) continue;
     const app::SensorCone local(revolution.placement.toObject(frame.origin), revolution.placement.inverse().apply(axis),
                                 cone.halfAngle());
+    // Searched within the best so far, in object units; only a point the search found counts (the
+    // limit scaled back need not equal the best: rounding).
+    const double limit = best.distance / revolution.scale;
     app::ConeNearest nearest;
-    nearest.distance = best.distance / revolution.scale;
+    nearest.distance = limit;
     app::nearestOnRevolution(profiles_[revolution.profile], local, nearest);
+    if (!(nearest.distance < limit)) continue;
     const double distance = nearest.distance * revolution.scale;
     if (distance < best.distance) {
       best.distance = distance;

@@ -271,6 +271,81 @@ TEST(ConeNearest, ApexOnTheAxisAndAxisAlongIt) {
   }
 }
 
+// Cases an independent review found: a half-space (every boundary crossing a double root of the
+// squared equation), and apexes within 1e-9 of a triangle's edge or a profile's vertex circle (the
+// crossing polynomials' values there below their coefficients' rounding).
+TEST(ConeNearest, HalfSpacesAndApexesBesideEdgesAgainstADenseSearch) {
+  const auto check = [](const std::vector<Point2>& profile, const SensorCone& cone, const std::string& what) {
+    const ConeNearest found = nearestOnRevolution(profile, cone);
+    const Sampled sampled = sampleRevolution(profile, cone, 4096, 256);
+    // An apex within the rounding of a crossing's computation of the surface (2^-40 of the
+    // coordinates: SensorCone::onBoundary) touches it, to that rounding: a reading that small is one.
+    const double touching = 0x1p-40 * std::sqrt(app::dot(cone.apex(), cone.apex()));
+    if (found.distance <= touching) return;
+    if (std::isfinite(sampled.distance)) {
+      EXPECT_LE(found.distance, double(sampled.distance) + kExact) << what;
+      EXPECT_GE(found.distance, double(sampled.distance) - sampled.spacing) << what;
+    }
+    if (std::isfinite(found.distance)) {
+      const Vec3d x = found.point;
+      expectValidPoint(found, cone, 1.0, meridianDistance(profile, std::hypot(x[0], x[1]), x[2]), what);
+    }
+  };
+  // The rim circle (r = 1, z = 0) crosses the boundary plane of the half-space z <= 1 ... : the
+  // nearest point lies on the rim, in the plane.
+  for (const double half : {kPi / 2, std::nextafter(kPi / 2, 0.0), kPi / 2 - 1e-12})
+    check({{1, 0}, {1, -1}}, SensorCone({-0.5, 0.3, 1}, {1, 0.3, 0}, half), "half-space " + std::to_string(half));
+  check({{0.14552891600367607, -0.43212027562658872},
+         {0.036854344631036595, 0.76190537006533376},
+         {0.3655939869796756, 0.40798200117654115}},
+        SensorCone({-0.021625961881128589, -0.36495380677532108, 0.40798200117341965},
+                   {-0.86439363154108828, 0.049606397178388217, -0.77475791127776594}, 0.60708883669103886),
+        "apex 3e-12 from a vertex circle");
+  check({{0.95790735096746937, -0.70391586628477054},
+         {0.48378546296930086, -0.54217649830342918},
+         {0.90991079177072554, 0.60554290915312481}},
+        SensorCone({0.4618378516515812, 0.14406308674420479, -0.5421764983034274},
+                   {-0.61918548284225028, -0.07241694012195854, -0.040998069690494132}, 0.76740873225440387),
+        "apex 5e-15 from a vertex circle (on it, to rounding)");
+  // Triangles: the apex 1.4e-9 from an edge, the cone turned away from the triangle: nothing
+  // inside it; and a half-space crossing an edge.
+  for (const double offset : {1e-15, 1e-12, 1e-9}) {
+    ConeNearest found;
+    app::nearestOnTriangle({Vec3d{-1, 0, 0}, Vec3d{1, 0, 0}, Vec3d{0, 1, 0}},
+                           SensorCone({0.3, -offset, -offset}, {0.3, -1, -0.2}, 0.5), found);
+    // Within the rounding of a crossing's computation (2^-40 of the coordinates, SensorCone::
+    // onBoundary) of the apex, the edge's points count as on the boundary: a reading of that size.
+    if (offset * std::sqrt(2.0) > 0x1p-40 * 0.3) {
+      EXPECT_EQ(found.distance, INFINITY) << "offset " << offset << ": found " << found.distance;
+    } else {
+      EXPECT_LE(found.distance, 0x1p-40 * 0.3) << "offset " << offset;
+    }
+  }
+  ConeNearest found;
+  const std::array<Vec3d, 3> triangle{Vec3d{0.62075679021106067, -0.84118328980252999, 0},
+                                      Vec3d{0.51704533789639728, 0.66174118715128749, 0},
+                                      Vec3d{-0.44712149640939658, -0.37691256827567687, 0}};
+  const SensorCone halfSpace({0.84103382455102582, 0.23653161791384725, 0.8085747768979934},
+                             {0.77489702532187432, -0.72497001664501926, -0.20844700456343021}, kPi / 2);
+  app::nearestOnTriangle(triangle, halfSpace, found);
+  // The half-space's plane crosses edges 0-1 and 1-2; the nearest point inside it, by dense search.
+  long double sampled = INFINITY;
+  constexpr int kSteps = 2000;
+  for (int i = 0; i <= kSteps; ++i) {
+    for (int j = 0; i + j <= kSteps; ++j) {
+      const long double u = static_cast<long double>(i) / kSteps, v = static_cast<long double>(j) / kSteps;
+      Long3 x;
+      for (std::size_t c = 0; c < 3; ++c)
+        x[c] = triangle[0][c] + u * (triangle[1][c] - triangle[0][c]) + v * (triangle[2][c] - triangle[0][c]);
+      long double distance;
+      if (insideCone(x, halfSpace, distance)) sampled = std::min(sampled, distance);
+    }
+  }
+  ASSERT_TRUE(std::isfinite(sampled));
+  EXPECT_LE(found.distance, double(sampled) + kExact);
+  EXPECT_GE(found.distance, double(sampled) - 2.0 / kSteps);
+}
+
 TEST(ConeNearest, RandomTrianglesAgainstADenseSearch) {
   for (const std::uint64_t seed : testing::testSeeds({4, 5, 6})) {
     std::mt19937_64 random(seed);

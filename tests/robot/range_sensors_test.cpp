@@ -128,6 +128,35 @@ TEST(RangeSensorsTest, RotatedAndScaledObjectsAreReadInTheirOwnFrame) {
   EXPECT_NO_THROW(robot::RangeSensors(stretched, sonar(0.2), {true, 64}));
 }
 
+TEST(RangeSensorsTest, AnObjectWhoseBallReachesTheConeButNotItsSurfaceNeverTakesTheReading) {
+  // Found by an independent review: a double cone scaled by 1.3 whose bounding ball reaches the
+  // cone beside the pole, its surface farther; the reading is always the pole's, on its surface.
+  const std::string text = R"({
+    "camera": {"from": [-3, 0, 1], "to": [2, 0, 1], "up": [0, 0, 1], "fov": 40},
+    "profiles": {"pole": {"points": [[0, -2], [0.25, -2], [0.25, 2], [0, 2]]},
+                 "spindle": {"points": [[0, -0.5], [0.5, 0], [0, 0.5]]}},
+    "materials": {"grey": {"type": "diffuse", "color": [0.5, 0.5, 0.5]}},
+    "objects": [{"profile": "pole", "material": "grey", "translate": [2, 0, 0]},
+                {"profile": "spindle", "material": "grey", "translate": [2.53, 0.3, 0.2], "scale": [1.3, 1.3, 1.3]}]
+  })";
+  const robot::RangeSensors sensors(io::parseScene(text, "two.json", "."), sonar(0.3));
+  const robot::RangeReading r = sensors.read(0, at(-0.2489, 0, 0), 0);
+  EXPECT_EQ(r.object, 0);
+  EXPECT_NEAR(r.range, 2.2489 - 0.25, kExact);
+  for (int i = 0; i < 400; ++i) {
+    const robot::RangeReading reading = sensors.read(0, at(-0.5 + 0.001 * i, 0, 0), 0);
+    if (reading.object == 0) {
+      EXPECT_NEAR(std::hypot(reading.point[0] - 2, reading.point[1]), 0.25, 1e-9) << "pose " << i;
+    } else {
+      ASSERT_EQ(reading.object, 1) << "pose " << i;
+      // On the spindle: its meridian |r| / 0.5 + |z| / 0.5 = 1 in its own frame (scale 1.3).
+      const double rr = std::hypot(reading.point[0] - 2.53, reading.point[1] - 0.3) / 1.3;
+      const double zz = (reading.point[2] - 0.2) / 1.3;
+      EXPECT_NEAR(rr + std::abs(zz), 0.5, 1e-9) << "pose " << i;
+    }
+  }
+}
+
 TEST(RangeSensorsTest, NoiseIsGaussianPerPoseAndTheGateDropsReadingsOutsideIt) {
   const io::SceneDescription scene = poleScene();
   const double stddev = 0.01;
