@@ -9,7 +9,7 @@ Scene, Lidar        a scene file and revolve-lidar's range-finder, bit for bit t
 RangeSensors        sonar and infrared cones (ROS Range): the nearest surface inside each, exact
                     (these four pickle, copy and deepcopy: the pickle holds what builds them)
 ScanFile            a scan written as revolve-lidar writes it (PCD or CSV), shard by shard
-scan_shard          one shard of a scan traced from files, loaded once per process
+scan_shard          one shard of a scan, from a Scene and Lidar sent along (or files loaded once a process)
 shard_poses         the poses one shard of a scan needs (a moving sensor's path past its sweeps)
 cylinder_clearance  revolve-clearance's robot clearance
 read_poses          a POSES.csv file as the tools read it
