@@ -4,6 +4,7 @@ the pickle holds what builds it (a Scene's file texts, so that no file is needed
 format version, another version being refused."""
 
 import copy
+import json
 import multiprocessing
 import pickle
 import shutil
@@ -273,3 +274,40 @@ def test_a_lidar_from_a_dict_and_range_sensors_round_trip():
     rebuilt = round_trip(sonars)
     assert rebuilt.names == sonars.names
     scans_equal(expected, rebuilt.read(scene, poses))
+
+
+def test_a_pickle_missing_a_file_text_is_refused_naming_the_file(tmp_path):
+    # Rebuilding reads no file: a text the pickle lacks is refused, named as the original named it,
+    # even where the file itself exists.
+    scene = revolve.Scene(SOURCE_DIR / "scenes" / "patio.json")
+    restore, (version, path, text, csvs, geometry, slices) = scene.__reduce_ex__(5)
+    (csv,) = csvs
+    with pytest.raises(ValueError, match=rf"{csv}: not among the files supplied"):
+        restore(version, path, text, {}, geometry, slices)
+    with pytest.raises(ValueError, match=rf"{csv}:2"):
+        restore(version, path, text, {csv: b"r,z\nnot a number,0\n"}, geometry, slices)
+    lidar = revolve.Lidar(SOURCE_DIR / "examples" / "robot" / "lidar_vlp16_pattern.json")
+    restore, (version, file, text, patterns) = lidar.__reduce_ex__(5)
+    (pattern,) = patterns
+    with pytest.raises(ValueError, match=rf"pattern: {pattern}: not among the files supplied"):
+        restore(version, file, text, {})
+
+
+def test_a_loaded_scene_with_toleranced_splines_round_trips(tmp_path):
+    # load() keeps a spline traced within a tolerance as the polyline it traces.
+    folder = tmp_path / "scenes"
+    shutil.copytree(SOURCE_DIR / "scenes", folder)
+    description = json.loads((folder / "spline_still_life.json").read_text())
+    curved = [p for p in description["profiles"].values() if p.get("spline", "linear") != "linear"]
+    assert len(curved) >= 3
+    for profile in curved:
+        profile["tolerance"] = 1e-3
+    (folder / "toleranced.json").write_text(json.dumps(description))
+    scene = revolve.RaycastingScene()
+    scene.load(folder / "toleranced.json")
+    revolutions = [a for a in scene._additions() if a[0] == "revolution"]
+    assert len(revolutions) == len(description["objects"]) and all(a[3] is None for a in revolutions)  # polylines
+    rays = rays_at(np.array([0, 0, 0.5]), count=10000)
+    rays[:, :3] *= 1.5
+    assert np.mean(scene.cast_rays(rays)["geometry_ids"] != revolve.RaycastingScene.INVALID_ID) > 0.3
+    assert_same_answers(scene, round_trip(scene), rays, points_near(np.array([0, 0, 0.5])), solid=False)
