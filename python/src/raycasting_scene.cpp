@@ -216,7 +216,16 @@ std::size_t RaycastingScene::geometryCount() const {
 
 std::size_t RaycastingScene::memoryBytes() const {
   std::shared_lock lock(mutex_);
-  return std::size_t(std::max<std::int64_t>(0, scene_.embreeBytes())) + scene_.revolveBytes() + scene_.meshBytes();
+  return std::size_t(std::max<std::int64_t>(0, scene_.embreeBytes())) + scene_.revolveBytes() + scene_.meshBytes() +
+         recipeBytes();
+}
+
+std::size_t RaycastingScene::recipeBytes() const noexcept {
+  std::size_t bytes = recipes_.capacity() * sizeof(std::optional<RevolutionRecipe>);
+  for (const std::optional<RevolutionRecipe>& recipe : recipes_) {
+    if (recipe) bytes += recipe->points.capacity() * sizeof(double) + (recipe->spline ? recipe->spline->capacity() : 0);
+  }
+  return bytes;
 }
 
 RaycastingScene::QueryLock RaycastingScene::readyForQueries(bool counting) {

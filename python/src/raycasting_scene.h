@@ -102,6 +102,8 @@ class RaycastingScene {
   // Why distances (or the inside) cannot be exact here, or empty; under the caller's lock.
   std::string distanceLimitation() const;
   std::string solidLimitation() const;
+  // Heap bytes the recipes hold; under the caller's lock.
+  std::size_t recipeBytes() const noexcept;
   // Whether world point p lies inside any revolution's solid (all closed: solidLimitation() empty).
   bool insideAny(const app::Vec3d& p) const noexcept;
   template <class Body>
