@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace revolve::python {
 namespace {
