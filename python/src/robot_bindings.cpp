@@ -7,6 +7,7 @@
 #include "numpy_inputs.h"
 
 #include "geometry/ray_limits.h"
+#include "io/input_file.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scan_files.h"
