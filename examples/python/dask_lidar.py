@@ -13,10 +13,12 @@ worker are in flight, so memory does not grow with the number of poses. A worker
 shard with it; Dask's scheduler gives the shard to another worker (and `retries` covers a shard that
 raises), and since a shard is written only once it is back, in order, nothing is lost or written twice.
 
-Without --scheduler a LocalCluster of N worker processes runs here. With one (a scheduler started by
-`dask scheduler`, workers by `dask worker ADDRESS`), every worker must import revolve (built for its
-Python and machine) and read SCENE, the profile CSVs it names, and SENSOR at the same paths as here
-(a shared or copied folder); the poses travel with the shards. A scheduler with no worker yet is
+The scene and sensor are built here and sent once to every worker (client.scatter with broadcast: a
+revolve.Scene pickles as its file's text and its profile CSVs' texts, a Lidar as its JSON and beam
+pattern), so a worker reads no file: it needs only to import revolve (built for its Python and
+machine). The poses travel with the shards. Without --scheduler a LocalCluster of N worker processes
+runs here; with one, a scheduler started by `dask scheduler` and workers by `dask worker ADDRESS`. A
+scheduler with no worker yet is
 waited on for --wait-for-workers seconds (default 60; 0: not at all; inf: for ever), saying so on
 stderr; if none has joined by then, the script says so and exits with status 1, writing nothing.
 """
@@ -33,11 +35,18 @@ import revolve
 
 def scan_to_file(client, scene, sensor, poses, output, shard_size, data="ascii", threads=1, retries=3, inputs=(), trace=revolve.scan_shard):
     """Traces `poses` (an (N, 4) array, or (N, 5) with times, as Lidar.scan takes them) shard by shard on `client`'s workers and writes `output`,
-    which may not be the scene, the sensor or one of `inputs`. `trace` runs a shard on a worker
-    (revolve.scan_shard: the scene and sensor loaded once per worker process)."""
-    scene, sensor, output = os.path.abspath(scene), os.path.abspath(sensor), os.path.abspath(output)
-    lidar = revolve.Lidar(sensor)  # read here too, so that a bad sensor fails before any work
-    scan_file = revolve.ScanFile(output, lidar, len(poses), data=data, inputs=[scene, sensor, *inputs])
+    which may not be the scene, the sensor or one of `inputs`. `scene` and `sensor` are files' paths
+    (or a revolve.Scene and a revolve.Lidar), built here and sent once to every worker, which then
+    needs no file. `trace(scene, lidar, poses, first_pose, threads, sweeps=...)` runs a shard on a
+    worker (revolve.scan_shard)."""
+    files = [os.path.abspath(path) for path in (scene, sensor) if not isinstance(path, (revolve.Scene, revolve.Lidar))]
+    built = scene if isinstance(scene, revolve.Scene) else revolve.Scene(scene)  # a bad input fails before any work
+    lidar = sensor if isinstance(sensor, revolve.Lidar) else revolve.Lidar(sensor)
+    output = os.path.abspath(output)
+    scan_file = revolve.ScanFile(output, lidar, len(poses), data=data, inputs=[*files, *inputs])
+    # Once to every worker, as pickles holding the files' texts; a worker that joins later, or
+    # replaces a dead one, fetches them from another.
+    scene_on_workers, lidar_on_workers = client.scatter([built, lidar], broadcast=True, hash=False)
     shards = deque((first, min(shard_size, len(poses) - first)) for first in range(0, len(poses), shard_size))
     in_flight = deque()
     window = 2 * max(1, len(client.scheduler_info()["workers"]))
@@ -45,7 +54,8 @@ def scan_to_file(client, scene, sensor, poses, output, shard_size, data="ascii",
     def submit():
         first, count = shards.popleft()
         shard = revolve.shard_poses(poses, first, count, lidar)
-        future = client.submit(trace, scene, sensor, shard, first, threads, sweeps=count, retries=retries, pure=False)
+        future = client.submit(trace, scene_on_workers, lidar_on_workers, shard, first, threads, sweeps=count,
+                               retries=retries, pure=False)
         in_flight.append((first, future))
 
     while shards and len(in_flight) < window:

@@ -104,4 +104,17 @@ std::string readTextFile(const std::string& path, std::uint64_t maxBytes, std::s
   return text;
 }
 
+const std::string& FileTexts::text(const std::string& path, std::uint64_t maxBytes, std::string_view kind) {
+  if (const auto kept = texts.find(path); kept != texts.end()) {
+    if (kept->second.size() > maxBytes) {
+      throw InputError(path, 0,
+                       "its " + byteCount(kept->second.size()) + " is too large: " + std::string(kind) +
+                           " is read up to " + byteCount(maxBytes));
+    }
+    return kept->second;
+  }
+  if (!readFiles) throw InputError(path, 0, "not among the files supplied with the text that names it");
+  return texts.emplace(path, readTextFile(path, maxBytes, kind)).first->second;
+}
+
 }  // namespace revolve::io

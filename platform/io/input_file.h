@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -33,6 +34,18 @@ inline constexpr std::size_t kMaxCsvLineBytes = 4096;
 // otherwise (missing, unreadable, not a regular file, too large: "its 80 MB is too large: `kind`
 // is read up to 64 MiB", kind such as "a JSON file").
 std::string readTextFile(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+
+// The texts of the files a reader opens, by path as opened: kept as it reads them (so that a scene
+// or sensor can be rebuilt elsewhere from what it read), or supplied beforehand so that nothing is
+// read from disk at all.
+struct FileTexts {
+  std::map<std::string, std::string> texts;
+  bool readFiles = true;  // false: a path not among `texts` is an InputError; no file is opened
+
+  // The text of `path`: the one kept, else the file read as readTextFile reads it (and kept). A kept
+  // text is held to the same size limit.
+  const std::string& text(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+};
 
 // What a path that is not a regular file names, for messages: "a directory", "a FIFO (named
 // pipe)", "a character device", "a block device", "a socket", else "not a plain file".

@@ -83,7 +83,8 @@ struct ProfileSource {
   std::string file;                               // the CSV as opened; empty for inline points
 };
 
-ProfileSource readPoints(const Reader& in, const Json& json, const std::string& path, const std::string& directory) {
+ProfileSource readPoints(const Reader& in, const Json& json, const std::string& path, const std::string& directory,
+                         FileTexts* csvs) {
   const Json* points = in.optional(json, "points");
   const Json* csv = in.optional(json, "csv");
   if ((points != nullptr) == (csv != nullptr)) in.fail(path, "needs exactly one of \"points\" or \"csv\"");
@@ -105,7 +106,8 @@ ProfileSource readPoints(const Reader& in, const Json& json, const std::string& 
   const std::string file = (std::filesystem::path(directory) / relative).string();
   ProfileFile csvPoints;
   try {
-    csvPoints = readProfileCsv(file);
+    csvPoints = csvs != nullptr ? parseProfileCsv(csvs->text(file, kMaxCsvFileBytes, "a CSV file"), file)
+                                : readProfileCsv(file);
   } catch (const InputError& error) {  // "file:line: problem", the line's text already made printable
     in.fail(csvPath, error.what());
   }
@@ -116,7 +118,7 @@ ProfileSource readPoints(const Reader& in, const Json& json, const std::string& 
 }
 
 SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
-                         const std::string& directory) {
+                         const std::string& directory, FileTexts* csvs) {
   in.object(json, path, {"points", "csv", "crease", "spline", "tolerance"});
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;
   if (const Json* crease = in.optional(json, "crease")) {
@@ -144,7 +146,7 @@ SceneProfile readProfile(const Reader& in, const std::string& name, const Json& 
     if (const std::optional<std::string> fault = toleranceFault(tolerance, numberText(*value)))
       in.fail(tolerancePath, *fault);
   }
-  const ProfileSource source = readPoints(in, json, path, directory);
+  const ProfileSource source = readPoints(in, json, path, directory, csvs);
   const auto failAt = [&](const ProfileError& error) {
     if (error.index() >= source.points.size()) in.fail(source.path, error.what());
     // Points are named by their key path; a CSV's by its file and line, under the csv key.
@@ -327,7 +329,10 @@ void checkName(const Reader& in, std::string_view name, const std::string& path)
   }
 }
 
-SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
+namespace {
+
+SceneDescription parseSceneText(std::string_view text, const std::string& file, const std::string& directory,
+                                FileTexts* csvs) {
   const Reader in(file);
   const Json root = json::parse(text, in);
   in.object(root, "", {"description", "camera", "profiles", "materials", "objects", "quads", "lights", "environment"});
@@ -341,7 +346,7 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
     in.fail("profiles", std::string("expected an object of named profiles, found ") + profiles.type_name());
   for (const auto& [name, value] : profiles.items()) {
     checkName(in, name, child("profiles", name));
-    scene.profiles.push_back(readProfile(in, name, value, child("profiles", name), directory));
+    scene.profiles.push_back(readProfile(in, name, value, child("profiles", name), directory, csvs));
   }
 
   const Json& materials = in.required(root, "", "materials");
@@ -411,6 +416,17 @@ SceneDescription parseScene(std::string_view text, const std::string& file, cons
   return scene;
 }
 
+}  // namespace
+
+SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
+  return parseSceneText(text, file, directory, nullptr);
+}
+
+SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory,
+                            FileTexts& csvs) {
+  return parseSceneText(text, file, directory, &csvs);
+}
+
 SceneDescription readScene(const std::string& path) {
   std::string text;
   try {
@@ -419,6 +435,15 @@ SceneDescription readScene(const std::string& path) {
     throw SceneError(error.what());
   }
   return parseScene(text, path, std::filesystem::path(path).parent_path().string());
+}
+
+SceneDescription readScene(const std::string& path, std::string& text, FileTexts& csvs) {
+  try {
+    text = readTextFile(path, kMaxJsonFileBytes, "a JSON file");
+  } catch (const InputError& error) {
+    throw SceneError(error.what());
+  }
+  return parseScene(text, path, std::filesystem::path(path).parent_path().string(), csvs);
 }
 
 }  // namespace revolve::io

@@ -14,6 +14,7 @@
 
 #include "geometry/placement.h"
 #include "geometry/vec3d.h"
+#include "io/input_file.h"
 
 #include <revolve/revolve.h>
 
@@ -118,7 +119,14 @@ struct SceneDescription {
 // Parses scene JSON `text`; `file` names it in messages and profile CSVs resolve against
 // `directory`. Throws SceneError.
 SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory);
+// The same, each profile CSV's text taken from (or, as it is read, kept in) `csvs`, by its path as
+// opened (`directory` / the name the scene gives): a scene rebuilt from texts alone, its messages
+// still naming the files.
+SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory,
+                            FileTexts& csvs);
 // Reads and parses the file at `path` (CSVs relative to its folder). Throws SceneError.
 SceneDescription readScene(const std::string& path);
+// The same, keeping the scene file's text in `text` and every CSV's in `csvs`.
+SceneDescription readScene(const std::string& path, std::string& text, FileTexts& csvs);
 
 }  // namespace revolve::io

@@ -1,5 +1,6 @@
 #include "io/sensor_file.h"
 
+#include "io/beam_pattern_file.h"
 #include "io/json_reader.h"
 #include "io/text_files.h"
 
@@ -160,7 +161,10 @@ std::vector<double> fanAngles(const BeamFan& fan) {
   return angles;
 }
 
-SensorDescription parseSensor(std::string_view text, const std::string& file) {
+namespace {
+
+// parseSensor, the beam pattern's text from `patterns` when given.
+SensorDescription parseSensorWith(std::string_view text, const std::string& file, FileTexts* patterns) {
   const Reader in(file);
   const Json root = json::parse(text, in);
   if (root.is_object() && root.contains("type")) {
@@ -203,7 +207,11 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
     sensor.patternFile =
         path.is_absolute() ? name : (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
     try {
-      sensor.pattern = readBeamPattern(sensor.patternFile);
+      sensor.pattern =
+          patterns != nullptr
+              ? parseBeamPattern(patterns->text(sensor.patternFile, kMaxPatternFileBytes, "a beam pattern file"),
+                                 sensor.patternFile)
+              : readBeamPattern(sensor.patternFile);
     } catch (const InputError& error) {
       in.fail("pattern", error.what());
     }
@@ -276,6 +284,16 @@ SensorDescription parseSensor(std::string_view text, const std::string& file) {
   return sensor;
 }
 
+}  // namespace
+
+SensorDescription parseSensor(std::string_view text, const std::string& file) {
+  return parseSensorWith(text, file, nullptr);
+}
+
+SensorDescription parseSensor(std::string_view text, const std::string& file, FileTexts& patterns) {
+  return parseSensorWith(text, file, &patterns);
+}
+
 CameraDescription parseCamera(std::string_view text, const std::string& file) {
   const Reader in(file);
   const Json root = json::parse(text, in);
@@ -299,6 +317,11 @@ CameraDescription parseCamera(std::string_view text, const std::string& file) {
 CameraDescription readCamera(const std::string& path) { return parseCamera(readText(path), path); }
 
 SensorDescription readSensor(const std::string& path) { return parseSensor(readText(path), path); }
+
+SensorDescription readSensor(const std::string& path, std::string& text, FileTexts& patterns) {
+  text = readText(path);
+  return parseSensor(text, path, patterns);
+}
 
 const char* radiationTypeName(RadiationType type) {
   return type == RadiationType::infrared ? "infrared" : "ultrasound";

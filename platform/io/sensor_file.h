@@ -17,6 +17,8 @@
 // SensorError naming the file, the key path (`horizontal.samples`), the value and the rule.
 #pragma once
 
+#include "io/input_file.h"
+
 #include "io/beam_pattern_file.h"
 
 #include <array>
@@ -179,6 +181,10 @@ std::vector<double> fanAngles(const BeamFan& fan);
 SensorDescription parseSensor(std::string_view text, const std::string& file);
 // Reads and parses the file at `path`. Throws SensorError.
 SensorDescription readSensor(const std::string& path);
+// The same, a beam pattern's text taken from (or, as it is read, kept in) `patterns` by its path
+// as resolved, and the sensor file's own in `text`: what rebuilds the sensor where the files are not.
+SensorDescription parseSensor(std::string_view text, const std::string& file, FileTexts& patterns);
+SensorDescription readSensor(const std::string& path, std::string& text, FileTexts& patterns);
 // The same for a camera's file. Throws SensorError.
 CameraDescription parseCamera(std::string_view text, const std::string& file);
 CameraDescription readCamera(const std::string& path);

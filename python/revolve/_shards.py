@@ -1,6 +1,7 @@
-"""One shard of a lidar scan traced from files, for a scan spread over processes or machines (Dask,
-multiprocessing): each process builds the scene and reads the sensor once, and every shard it traces
-after reuses them."""
+"""One shard of a lidar scan, for a scan spread over processes or machines (Dask, multiprocessing):
+the scene and sensor travel with the tasks as pickled objects (a Scene's pickle holds its file's text
+and its CSVs', so a worker needs no file), or are files loaded once per process, which every shard it
+traces after reuses."""
 
 import os
 import threading
@@ -15,7 +16,8 @@ _lock = threading.Lock()
 
 def _path(value, name):
     if not isinstance(value, (str, bytes, os.PathLike)):
-        raise TypeError(f"{name}: a {type(value).__name__}; expected a path (str or os.PathLike)")
+        raise TypeError(f"{name}: a {type(value).__name__}; expected a path (str or os.PathLike) or a revolve."
+                        f"{'Scene' if name == 'scene' else 'Lidar'}")
     path = os.fsdecode(value)
     if not path or "\0" in path:
         raise ValueError(f"{name}: {path!r} is no file name")
@@ -29,23 +31,26 @@ def _modified(path, name):
         raise ValueError(f"{name}: {path}: cannot open: {error.strerror}") from None
 
 
-def _scene_and_lidar(scene, sensor):
+def _from_file(kind, value, name):
     # Keyed by path and modification time: a file changed on disk is read again.
-    key = tuple((os.path.abspath(path), _modified(path, name)) for path, name in ((scene, "scene"), (sensor, "sensor")))
+    path = _path(value, name)
+    key = (kind.__name__, os.path.abspath(path), _modified(path, name))
     with _lock:
         if key not in _loaded:
-            if len(_loaded) >= 4:
+            if len(_loaded) >= 8:
                 _loaded.clear()
-            _loaded[key] = (Scene(scene), Lidar(sensor))
+            _loaded[key] = kind(path)
         return _loaded[key]
 
 
 def scan_shard(scene, sensor, poses, first_pose=0, threads=0, sweeps=None):
-    """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose, sweeps) with the scene and sensor
-    files loaded once per process: the arrays a ScanFile writes (ranges, points, ids, intensity,
-    time) of poses first_pose, first_pose + 1, ... of a scan, each with its own noise. `poses` as
-    shard_poses gives them, `sweeps` the shard's count."""
-    built, lidar = _scene_and_lidar(_path(scene, "scene"), _path(sensor, "sensor"))
+    """Lidar(sensor).scan(Scene(scene), poses, threads, first_pose, sweeps): the arrays a ScanFile
+    writes (ranges, points, ids, intensity, time) of poses first_pose, first_pose + 1, ... of a scan,
+    each with its own noise. `scene` a revolve.Scene or a scene file's path, `sensor` a revolve.Lidar
+    or a sensor file's path (files loaded once per process); `poses` as shard_poses gives them,
+    `sweeps` the shard's count."""
+    built = scene if isinstance(scene, Scene) else _from_file(Scene, scene, "scene")
+    lidar = sensor if isinstance(sensor, Lidar) else _from_file(Lidar, sensor, "sensor")
     scan = lidar.scan(built, poses, threads=threads, first_pose=first_pose, sweeps=sweeps)
     return {key: scan[key] for key in ("ranges", "points", "ids", "intensity", "time")}
 

@@ -14,6 +14,9 @@ namespace py = pybind11;
 
 void bindRaycastingScene(py::module_& m);
 void bindRobot(py::module_& m);
+// RaycastingScene's _additions(), what revolve's pickling (revolve/_pickle.py) keeps of it.
+class RaycastingScene;
+void bindRaycastingPickling(py::class_<RaycastingScene>& scene);
 
 // Python warnings (UserWarning) for what the readers and profiles drop or doubt.
 void warnAbout(const std::vector<std::string>& warnings);

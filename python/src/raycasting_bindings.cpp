@@ -15,11 +15,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace revolve::python {
@@ -34,12 +37,17 @@ void refuse(const QueryArray& in, const char* name, std::size_t index, bool rays
                         (rays ? app::queryRayFault(item) : app::queryPointFault(item)));
 }
 
-Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toleranceObject) {
+// The shape; `recipe` receives its points, spline and tolerance as taken (what a pickle keeps).
+Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toleranceObject,
+              Scene::RevolutionRecipe& recipe) {
   const py::array_t<double> array = copiedMatrix(pointsObject, "points", -1, 2, 0, false);
   std::vector<Point2> points(std::size_t(array.shape(0)));
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {array.at(i, 0), array.at(i, 1)};
   const std::optional<std::string> spline = optionalText(splineObject, "spline");
   const std::optional<double> tolerance = optionalReal(toleranceObject, "tolerance");
+  recipe.points.assign(array.data(), array.data() + array.size());
+  recipe.spline = spline;
+  recipe.tolerance = tolerance;
   if (tolerance) {
     if (const std::optional<std::string> fault =
             io::toleranceFault(*tolerance, std::string(py::repr(toleranceObject)))) {
@@ -92,10 +100,15 @@ app::Placement placementOf(const double rows[16], const Shape& shape, const char
   }
 }
 
-app::Placement placementFrom(py::handle transform, const Shape& shape) {
+// `rows` receives the matrix taken, row by row (what a pickle keeps).
+app::Placement placementFrom(py::handle transform, const Shape& shape, std::array<double, 16>& rows) {
   static const double identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  if (transform.is_none()) return placementOf(identity, shape, "transform");
+  if (transform.is_none()) {
+    std::copy(identity, identity + 16, rows.begin());
+    return placementOf(identity, shape, "transform");
+  }
   const py::array_t<double> matrix = copiedMatrix(transform, "transform", 4, 4);
+  std::copy(matrix.data(), matrix.data() + 16, rows.begin());
   return placementOf(matrix.data(), shape, "transform");
 }
 
@@ -152,7 +165,7 @@ std::vector<std::uint32_t> load(Scene& scene, py::handle pathObject) {
   warnAbout(scene::degenerateObjectWarnings(description, false));
   // Every object placed before any is added: a refused one leaves the scene as it was. Each by the
   // 4x4 of its transform, as add_revolution places a shape.
-  std::vector<std::pair<Shape, app::Placement>> placed;
+  std::vector<std::tuple<Shape, app::Placement, Scene::RevolutionRecipe>> placed;
   for (std::size_t i = 0; i < description.objects.size(); ++i) {
     const io::SceneObject& object = description.objects[i];
     const io::SceneProfile& profile = description.profiles[object.profile];
@@ -166,10 +179,18 @@ std::vector<std::uint32_t> load(Scene& scene, py::handle pathObject) {
     rows[15] = 1;
     const std::string name = path + ": objects[" + std::to_string(i) + "]'s transform";
     const app::Placement placement = placementOf(rows, shape, name.c_str());
-    placed.emplace_back(std::move(shape), placement);
+    // Kept as add_revolution would take it: the curve's points and kind, or the polyline traced.
+    Scene::RevolutionRecipe recipe;
+    const std::span<const Point2> points = profile.spline ? profile.spline->points() : profile.profile.points();
+    for (const Point2& p : points) recipe.points.insert(recipe.points.end(), {p.r, p.z});
+    if (profile.spline) recipe.spline = splineKindName(profile.spline->kind());
+    std::copy(rows, rows + 16, recipe.rows.begin());
+    placed.emplace_back(std::move(shape), placement, std::move(recipe));
   }
   std::vector<std::uint32_t> ids;
-  for (auto& [shape, placement] : placed) ids.push_back(scene.addRevolution(std::move(shape), placement));
+  for (auto& [shape, placement, recipe] : placed) {
+    ids.push_back(scene.addRevolution(std::move(shape), placement, std::move(recipe)));
+  }
   if (!description.quads.empty()) {
     std::vector<float> vertices;
     std::vector<std::uint32_t> triangles;
@@ -352,9 +373,10 @@ direction), query points float32 (..., 3), both C-contiguous (read in place). Ge
   scene.def(
       "add_revolution",
       [](Scene& s, py::handle points, py::handle transform, py::handle spline, py::handle tolerance) {
-        Shape shape = shapeOf(points, spline, tolerance);
-        const app::Placement placement = placementFrom(transform, shape);
-        return s.addRevolution(std::move(shape), placement);
+        Scene::RevolutionRecipe recipe;
+        Shape shape = shapeOf(points, spline, tolerance, recipe);
+        const app::Placement placement = placementFrom(transform, shape, recipe.rows);
+        return s.addRevolution(std::move(shape), placement, std::move(recipe));
       },
       py::arg("points"), py::arg("transform") = py::none(), py::arg("spline") = py::none(),
       py::arg("tolerance") = py::none(),
@@ -424,6 +446,7 @@ primitive). Its crossings are count_intersections' own: a surface of revolution'
   scene.def("memory_bytes", &Scene::memoryBytes,
             "Heap bytes the scene holds: revolve's shapes, the meshes' arrays, and Embree's allocations for the scene "
             "(its BVHs; the device's own set-up included).");
+  bindRaycastingPickling(scene);
 }
 
 }  // namespace revolve::python

@@ -180,6 +180,7 @@ RaycastingScene::RaycastingScene() : scene_(scene::Layout{.robust = true, .ident
 std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& placement) {
   std::unique_lock lock(mutex_);
   const std::uint32_t id = scene_.addRevolution(std::move(shape), placement);
+  recipes_.resize(std::size_t(id) + 1);
   committed_ = false;
   countingCurrent_ = false;
   return id;
@@ -188,9 +189,34 @@ std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& 
 std::uint32_t RaycastingScene::addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles) {
   std::unique_lock lock(mutex_);
   const std::uint32_t id = scene_.addTriangles(vertices, triangles);
+  recipes_.resize(std::size_t(id) + 1);
   committed_ = false;
   countingCurrent_ = false;
   return id;
+}
+
+std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& placement, RevolutionRecipe recipe) {
+  std::unique_lock lock(mutex_);
+  const std::uint32_t id = scene_.addRevolution(std::move(shape), placement);
+  recipes_.resize(std::size_t(id) + 1);
+  recipes_[id] = std::move(recipe);
+  committed_ = false;
+  countingCurrent_ = false;
+  return id;
+}
+
+void RaycastingScene::forEachAddition(const std::function<void(const RevolutionRecipe&)>& revolution,
+                                      const std::function<void(const scene::TriangleMesh&)>& mesh) const {
+  std::shared_lock lock(mutex_);
+  for (std::uint32_t id = 0; id < scene_.geometryCount(); ++id) {
+    if (const scene::TriangleMesh* triangles = scene_.meshOf(id)) {
+      mesh(*triangles);
+    } else if (id < recipes_.size() && recipes_[id]) {
+      revolution(*recipes_[id]);
+    } else {
+      throw std::logic_error("geometry " + std::to_string(id) + " was added without what rebuilds it");
+    }
+  }
 }
 
 std::size_t RaycastingScene::geometryCount() const {
@@ -200,7 +226,16 @@ std::size_t RaycastingScene::geometryCount() const {
 
 std::size_t RaycastingScene::memoryBytes() const {
   std::shared_lock lock(mutex_);
-  return std::size_t(std::max<std::int64_t>(0, scene_.embreeBytes())) + scene_.revolveBytes() + scene_.meshBytes();
+  return std::size_t(std::max<std::int64_t>(0, scene_.embreeBytes())) + scene_.revolveBytes() + scene_.meshBytes() +
+         recipeBytes();
+}
+
+std::size_t RaycastingScene::recipeBytes() const noexcept {
+  std::size_t bytes = recipes_.capacity() * sizeof(std::optional<RevolutionRecipe>);
+  for (const std::optional<RevolutionRecipe>& recipe : recipes_) {
+    if (recipe) bytes += recipe->points.capacity() * sizeof(double) + (recipe->spline ? recipe->spline->capacity() : 0);
+  }
+  return bytes;
 }
 
 RaycastingScene::QueryLock RaycastingScene::readyForQueries(bool counting) {

@@ -15,6 +15,7 @@
 
 #include <revolve/revolve.h>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -39,6 +40,21 @@ class RaycastingScene {
   // vertex count and the vertices against the coordinate limit.
   std::uint32_t addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles);
   std::size_t geometryCount() const;
+
+  // What a pickle keeps of a revolution (pickling.cpp): its profile and placement as given, after
+  // their checks. Added with one, the revolution keeps it; a mesh's arrays are the scene's own.
+  struct RevolutionRecipe {
+    std::vector<double> points;  // (r, z) pairs, as given
+    std::optional<std::string> spline;
+    std::optional<double> tolerance;
+    std::array<double, 16> rows{};  // the 4x4 object-to-world matrix, row by row
+  };
+  std::uint32_t addRevolution(Shape shape, const app::Placement& placement, RevolutionRecipe recipe);
+  // Calls `revolution` or `mesh` for each geometry in id order, under the lock additions take
+  // shared: what rebuilds the scene addition by addition. Throws std::logic_error for a revolution
+  // added without its recipe.
+  void forEachAddition(const std::function<void(const RevolutionRecipe&)>& revolution,
+                       const std::function<void(const scene::TriangleMesh&)>& mesh) const;
   // Heap bytes the geometry holds: revolve's shapes and the meshes' vertices and indices, and what
   // Embree has allocated for the scene (its memory monitor), device set-up included.
   std::size_t memoryBytes() const;
@@ -99,6 +115,8 @@ class RaycastingScene {
   // Why distances (or the inside) cannot be exact here, or empty; under the caller's lock.
   std::string distanceLimitation() const;
   std::string solidLimitation() const;
+  // Heap bytes the recipes hold; under the caller's lock.
+  std::size_t recipeBytes() const noexcept;
   // Whether world point p lies inside any revolution's solid (all closed: solidLimitation() empty).
   bool insideAny(const app::Vec3d& p) const noexcept;
   template <class Body>
@@ -108,6 +126,8 @@ class RaycastingScene {
   RTCScene counting_ = nullptr;  // scene_.filteredScene(): every crossing counted
   bool committed_ = false, countingCurrent_ = false;
   mutable std::shared_mutex mutex_;  // shared: queries; exclusive: additions, commits, the counting copy
+
+  std::vector<std::optional<RevolutionRecipe>> recipes_;  // by geometry id; nothing for a mesh
 };
 
 }  // namespace revolve::python

@@ -7,6 +7,7 @@
 #include "numpy_inputs.h"
 
 #include "geometry/ray_limits.h"
+#include "io/input_file.h"
 #include "io/output_set.h"
 #include "io/poses_file.h"
 #include "io/scan_files.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
@@ -33,6 +35,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace revolve::python {
@@ -51,6 +54,12 @@ void checkSettings(const std::string& geometry, std::uint32_t slices) {
 // A scene file as revolve-lidar (--geometry mibit or mesh) and revolve-clearance build it.
 struct ToolScene {
   std::string path;
+  std::string geometry;
+  std::uint32_t slices;
+  // What built it, as a pickle keeps it: the scene file's text and every profile CSV's, by its path
+  // as opened.
+  std::string text;
+  io::FileTexts csvs;
   io::SceneDescription description;
   std::unique_ptr<scene::EmbreeScene> built;
   std::mutex clearanceMutex;
@@ -58,8 +67,28 @@ struct ToolScene {
 
   robot::RangeSensors::Settings rangeSettings;  // the same geometry for range sensors' cones
 
-  ToolScene(const std::string& file, const std::string& geometry, std::uint32_t slices)
-      : path(file), description((checkSettings(geometry, slices), io::readScene(file))) {
+  ToolScene(const std::string& file, const std::string& geometryName, std::uint32_t sliceCount)
+      : path(file),
+        geometry(geometryName),
+        slices(sliceCount),
+        description((checkSettings(geometryName, sliceCount), io::readScene(file, text, csvs))) {
+    build();
+  }
+
+  // From the texts a pickle keeps, reading no file; messages name the files as the original did.
+  ToolScene(const std::string& file, const std::string& geometryName, std::uint32_t sliceCount, std::string sceneText,
+            io::FileTexts texts)
+      : path(file),
+        geometry(geometryName),
+        slices(sliceCount),
+        text(std::move(sceneText)),
+        csvs(std::move(texts)),
+        description((checkSettings(geometryName, sliceCount), csvs.readFiles = false,
+                     io::parseScene(text, file, std::filesystem::path(file).parent_path().string(), csvs))) {
+    build();
+  }
+
+  void build() {
     rangeSettings.mesh = geometry == "mesh";
     rangeSettings.slices = slices;
     for (const io::SceneProfile& profile : description.profiles) warnAbout(profile.warnings);
@@ -155,6 +184,10 @@ py::array_t<double> posesArray(const std::vector<io::RobotPose>& poses) {
 
 struct PySensor {
   io::SensorDescription sensor;
+  // What built it, as a pickle keeps it: the sensor's JSON text, the name it goes by in messages
+  // (its path, or "sensor" for a dict) and its beam pattern's text, if any, by its path.
+  std::string file, text;
+  io::FileTexts patterns;
 };
 
 // A sensor dict as the sensor file's JSON text, value by value: numpy scalars and arrays stand for
@@ -209,34 +242,56 @@ void appendJson(std::string& out, py::handle value, const std::string& path) {
   }
 }
 
-io::SensorDescription sensorOf(py::handle sensor) {
+PySensor sensorOf(py::handle sensor) {
+  PySensor made;
   if (py::isinstance<py::dict>(sensor)) {
-    std::string text;
-    appendJson(text, sensor, "");
-    return io::parseSensor(text, "sensor");
+    appendJson(made.text, sensor, "");
+    made.file = "sensor";
+    made.sensor = io::parseSensor(made.text, made.file, made.patterns);
+    return made;
   }
   if (!py::isinstance<py::str>(sensor) && !py::isinstance<py::bytes>(sensor) && !py::hasattr(sensor, "__fspath__")) {
     throw py::type_error("sensor: a " + std::string(py::str(py::type::handle_of(sensor).attr("__name__"))) +
                          "; expected a sensor file's path or its JSON as a dict");
   }
-  return io::readSensor(pathArgument(sensor, "sensor"));
+  made.file = pathArgument(sensor, "sensor");
+  made.sensor = io::readSensor(made.file, made.text, made.patterns);
+  return made;
+}
+
+// A Lidar from what a pickle keeps, reading no file.
+PySensor sensorFromTexts(const std::string& file, const std::string& text, io::FileTexts patterns) {
+  PySensor made{{}, file, text, std::move(patterns)};
+  made.patterns.readFiles = false;
+  made.sensor = io::parseSensor(made.text, made.file, made.patterns);
+  return made;
 }
 
 struct PyRangeSensors {
   io::RangeSensorsDescription sensors;
+  std::string file, text;  // what built it, as a pickle keeps it (as PySensor's)
 };
 
-io::RangeSensorsDescription rangeSensorsOf(py::handle sensor) {
+PyRangeSensors rangeSensorsOf(py::handle sensor) {
+  PyRangeSensors made;
   if (py::isinstance<py::dict>(sensor)) {
-    std::string text;
-    appendJson(text, sensor, "");
-    return io::parseRangeSensors(text, "sensor");
+    appendJson(made.text, sensor, "");
+    made.file = "sensor";
+    made.sensors = io::parseRangeSensors(made.text, made.file);
+    return made;
   }
   if (!py::isinstance<py::str>(sensor) && !py::isinstance<py::bytes>(sensor) && !py::hasattr(sensor, "__fspath__")) {
     throw py::type_error("sensor: a " + std::string(py::str(py::type::handle_of(sensor).attr("__name__"))) +
                          "; expected a range sensor file's path or its JSON as a dict");
   }
-  return io::readRangeSensors(pathArgument(sensor, "sensor"));
+  made.file = pathArgument(sensor, "sensor");
+  try {
+    made.text = io::readTextFile(made.file, io::kMaxJsonFileBytes, "a JSON file");
+  } catch (const io::InputError& error) {  // as readRangeSensors says it
+    throw io::SensorError(error.what());
+  }
+  made.sensors = io::parseRangeSensors(made.text, made.file);
+  return made;
 }
 
 py::dict readRanges(const PyRangeSensors& self, py::handle sceneObject, py::handle posesObject,
@@ -525,6 +580,21 @@ azimuthal steps (revolve-lidar --geometry mesh --slices K).)")
                                                 std::uint32_t(unsignedArgument(slices, "slices", 3, 1u << 16)));
            }),
            py::arg("path"), py::arg("geometry") = py::str("mibit"), py::arg("slices") = py::int_(64))
+      .def(
+          "_sources",
+          [](const ToolScene& s) {
+            py::dict csvs;
+            for (const auto& [path, text] : s.csvs.texts) csvs[py::str(path)] = py::bytes(text);
+            return py::make_tuple(s.path, py::bytes(s.text), csvs, s.geometry, s.slices);
+          },
+          "(path, scene text, {CSV path: text}, geometry, slices): what rebuilds the scene (what a pickle keeps)")
+      .def_static(
+          "_from_sources",
+          [](const std::string& path, const py::bytes& text, const std::map<std::string, std::string>& csvs,
+             const std::string& geometry, std::uint32_t slices) {
+            return std::make_shared<ToolScene>(path, geometry, slices, std::string(text), io::FileTexts{csvs, false});
+          },
+          py::arg("path"), py::arg("text"), py::arg("csvs"), py::arg("geometry"), py::arg("slices"))
       .def_property_readonly("path", [](const ToolScene& s) { return s.path; })
       .def_property_readonly("object_count", [](const ToolScene& s) { return s.description.objects.size(); })
       .def_property_readonly("quad_count", [](const ToolScene& s) { return s.description.quads.size(); });
@@ -544,7 +614,21 @@ max_returns, rings, azimuths): one layer per return, empty (inf range, nan point
 fewer; a beam pattern one ring of all its beams. With a rotation_rate (or pattern
 times) and poses that carry times, each beam is traced from where the moving sensor is when it
 fires (docs/robot.md).)")
-      .def(py::init([](py::handle sensor) { return PySensor{sensorOf(sensor)}; }), py::arg("sensor"))
+      .def(py::init([](py::handle sensor) { return sensorOf(sensor); }), py::arg("sensor"))
+      .def(
+          "_sources",
+          [](const PySensor& s) {
+            py::dict patterns;
+            for (const auto& [path, text] : s.patterns.texts) patterns[py::str(path)] = py::bytes(text);
+            return py::make_tuple(s.file, py::bytes(s.text), patterns);
+          },
+          "(name, JSON text, {pattern path: text}): what rebuilds the sensor (what a pickle keeps)")
+      .def_static(
+          "_from_sources",
+          [](const std::string& file, const py::bytes& text, const std::map<std::string, std::string>& patterns) {
+            return sensorFromTexts(file, std::string(text), io::FileTexts{patterns, false});
+          },
+          py::arg("file"), py::arg("text"), py::arg("patterns"))
       .def("scan", &scan, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
            py::arg("first_pose") = py::int_(0), py::arg("sweeps") = py::none(),
            "scene: a Scene or a scene file's path; poses: (N, 3) [x, y, yaw], (N, 4) [x, y, z, yaw], (N, 5) "
@@ -588,7 +672,18 @@ seeded noise; inf where there is none or it falls outside [min_range, max_range]
 arrays: range (poses, sensors) float64, point (poses, sensors, 3) float64 (the reading's point in
 the world frame, nan for none) and object (poses, sensors) int64 (the scene's object index, quads
 after the objects, -1 for none).)")
-      .def(py::init([](py::handle sensor) { return PyRangeSensors{rangeSensorsOf(sensor)}; }), py::arg("sensor"))
+      .def(py::init([](py::handle sensor) { return rangeSensorsOf(sensor); }), py::arg("sensor"))
+      .def(
+          "_sources", [](const PyRangeSensors& s) { return py::make_tuple(s.file, py::bytes(s.text)); },
+          "(name, JSON text): what rebuilds the sensors (what a pickle keeps)")
+      .def_static(
+          "_from_sources",
+          [](const std::string& file, const py::bytes& text) {
+            PyRangeSensors made{{}, file, std::string(text)};
+            made.sensors = io::parseRangeSensors(made.text, made.file);
+            return made;
+          },
+          py::arg("file"), py::arg("text"))
       .def("read", &readRanges, py::arg("scene"), py::arg("poses"), py::arg("threads") = py::int_(0),
            py::arg("first_pose") = py::int_(0),
            "scene: a Scene or a scene file's path; poses: as Lidar.scan takes them, or a POSES.csv path; "

@@ -4,6 +4,7 @@ and the poses carry times, so every shard also needs the poses past its own (rev
 
 import importlib.util
 import os
+import shutil
 import signal
 import threading
 import time
@@ -99,3 +100,29 @@ def test_the_command_line_writes_the_same_file(job):
     example = load_example()
     example.main([job["scene"], job["sensor"], str(job["poses_file"]), "-o", str(out), "--workers", "2", "--shard-size", "7"])
     assert out.read_bytes() == (job["folder"] / "cli.pcd").read_bytes()
+
+
+def test_workers_without_the_files_write_the_same_file(client, job, tmp_path):
+    # The scene (with its profile CSVs) and the sensor are copied to a folder, built here from the
+    # copy, and the folder is moved away before any shard runs; the workers run elsewhere too. They
+    # can read no file: the scene and sensor reach them as pickles holding the files' texts.
+    folder = tmp_path / "inputs"
+    shutil.copytree(SOURCE_DIR / "scenes", folder / "scenes")
+    shutil.copy(job["sensor"], folder / "sensor.json")
+    scene = revolve.Scene(folder / "scenes" / "robot_world.json")
+    lidar = revolve.Lidar(folder / "sensor.json")
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    before = client.run(os.getcwd)
+    client.run(os.chdir, str(elsewhere))
+    moved = folder.rename(tmp_path / "moved")
+    try:
+        out = job["folder"] / "no_files.pcd"
+        load_example().scan_to_file(client, scene, lidar, job["poses"], out, shard_size=6)
+        assert set(client.run(os.getcwd).values()) == {str(elsewhere)}
+        assert not folder.exists()
+        assert out.read_bytes() == (job["folder"] / "cli.pcd").read_bytes()
+    finally:
+        for worker, cwd in before.items():
+            client.run(os.chdir, cwd, workers=[worker])
+        moved.rename(folder)

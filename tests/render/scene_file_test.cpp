@@ -156,5 +156,55 @@ TEST(SceneFileTest, SplineProfilesReadExactOrAsPolylines) {
   EXPECT_GT(bottle.profile.points().size(), 6u);
 }
 
+// A scene rebuilt from texts alone (what a Python pickle of a Scene holds): the texts readScene
+// kept give the same description where the files are not, and a CSV missing from them, or bad in
+// them, is refused naming the file as reading it from disk would.
+TEST(SceneFileTest, SuppliedTextsRebuildTheSceneWithoutItsFiles) {
+  std::string text;
+  io::FileTexts csvs;
+  io::SceneDescription read;
+  {
+    const testing::ScratchDirectory dir;
+    dir.write("scene.json", testing::kScene);
+    dir.write("bottle.csv", testing::kBottleCsv);
+    const WorkingDirectory inside(dir.path());
+    read = io::readScene("scene.json", text, csvs);
+  }
+  EXPECT_EQ(text, testing::kScene);
+  ASSERT_EQ(csvs.texts.size(), 1u);
+  EXPECT_EQ(csvs.texts.begin()->first, "bottle.csv");
+  EXPECT_EQ(csvs.texts.begin()->second, testing::kBottleCsv);
+
+  const testing::ScratchDirectory empty;  // neither file is here
+  const WorkingDirectory inside(empty.path());
+  io::FileTexts supplied{csvs.texts, false};
+  const io::SceneDescription rebuilt = io::parseScene(text, "scene.json", "", supplied);
+  ASSERT_EQ(rebuilt.profiles.size(), read.profiles.size());
+  for (std::size_t i = 0; i < read.profiles.size(); ++i) {
+    const auto a = read.profiles[i].profile.points(), b = rebuilt.profiles[i].profile.points();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].r, b[k].r);
+      EXPECT_EQ(a[k].z, b[k].z);
+    }
+    EXPECT_EQ(rebuilt.profiles[i].csvFile, read.profiles[i].csvFile);
+  }
+
+  io::FileTexts none{{}, false};
+  try {
+    (void)io::parseScene(text, "scene.json", "", none);
+    ADD_FAILURE() << "no error";
+  } catch (const io::SceneError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("bottle.csv: not among the files supplied"));
+  }
+  io::FileTexts bad{{{"bottle.csv", "r,z\n0,0\n0.3,x\n"}}, false};
+  try {
+    (void)io::parseScene(text, "scene.json", "", bad);
+    ADD_FAILURE() << "no error";
+  } catch (const io::SceneError& error) {
+    EXPECT_THAT(error.what(), HasSubstr("bottle.csv:3"));
+  }
+}
+
 }  // namespace
 }  // namespace revolve
