@@ -58,6 +58,7 @@ def answers(scene, rays, points, solid):
     out = {f"cast_rays.{k}": v.tobytes() for k, v in scene.cast_rays(rays).items()}
     out["test_occlusions"] = scene.test_occlusions(rays, tnear=0.5, tfar=5.0).tobytes()
     out["count_intersections"] = scene.count_intersections(rays).tobytes()
+    out.update({f"list_intersections.{k}": v.tobytes() for k, v in scene.list_intersections(rays).items()})
     out.update({f"closest.{k}": v.tobytes() for k, v in scene.compute_closest_points(points).items()})
     out["compute_distance"] = scene.compute_distance(points).tobytes()
     if solid:
