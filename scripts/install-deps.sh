@@ -9,7 +9,8 @@
 #            clang with its sanitizer and libFuzzer runtimes, matplotlib (revolve-lidar --plot,
 #            bench/plot_results.py), POV-Ray 3.7 (revolve-bench pov, the export's round-trip test),
 #            the DejaVu font (the side-by-side figure's labels), clang-format (scripts/check-format.sh);
-#            and the Python package's build and tests: headers, pybind11, numpy, pytest, Dask
+#            and the Python package's build and tests: headers, pybind11, numpy, pytest, venv (with
+#            pip: `pip install .` into a fresh virtual environment), Dask
 #            distributed and Open3D (compared against), Pillow (camera frames read into ROS 2 bags),
 #            and on Debian 13 rosbags (revolve.ros2's bags; Debian 12 has no python3-rosbags, and
 #            the bag tests skip there saying so)
@@ -26,7 +27,7 @@ packages=(
 case "${1:-}" in
   "") ;;
   --test) packages+=(libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-dev python3-matplotlib povray fonts-dejavu-core
-                     clang-format python3-dev python3-pybind11 python3-numpy python3-pytest python3-distributed python3-open3d python3-pil
+                     clang-format python3-dev python3-pybind11 python3-numpy python3-pytest python3-venv python3-distributed python3-open3d python3-pil
                      pcl-tools) ;;  # PCL reading the scans revolve-lidar writes
   *) echo "usage: $0 [--test]" >&2; exit 2 ;;
 esac
