@@ -94,7 +94,8 @@ def create_rays_pinhole(*args, **kwargs):
     up = _matrix(bound["up"], "up", (3,))
     focal = 0.5 * width / math.tan(0.5 * math.radians(fov))
     intrinsic = np.array([[focal, 0, 0.5 * width], [0, focal, 0.5 * height], [0, 0, 1]])
-    # The camera frame: z towards the centre, x = up x z, y = z x x (image rows run down).
+    # The camera frame: z towards the centre, x = up x z, y = z x x: image rows run along y, which is
+    # `up` made square to z (as in Open3D: row 0 lies farthest against `up`; -up gives upright images).
     forward = center - eye
     if not np.linalg.norm(forward) > 0 or not np.linalg.norm(up) > 0:
         raise ValueError("eye must differ from center, and up must not be zero")
