@@ -278,8 +278,7 @@ void nearestOnCircle(const SensorCone& cone, double r, double z, const Vec3d& me
   const Real ew = dot(e, w), fw = dot(f, w), c2 = Real(cone.cosHalf()) * cone.cosHalf();
   const Poly w1 = poly({1, 0, 1});
   for (int half = 0; half < 2; ++half) {
-    const Poly l =
-        half == 0 ? poly({g, 2 * r * fw, g - 2 * r * ew}) : poly({g - 2 * r * ew, -2 * r * fw, g - 2 * r * ew});
+    const Poly l = half == 0 ? poly({g, 2 * r * fw, g - 2 * r * ew}) : poly({g - 2 * r * ew, -2 * r * fw, g});
     const Poly q = half == 0 ? poly({d2, 0, d2 + 4 * Real(r) * rho}) : poly({d2 + 4 * Real(r) * rho, 0, d2});
     const Poly crossing = l * l + (-c2) * (q * w1);
     Real t[8];
@@ -326,14 +325,17 @@ bool SensorCone::contains(const Vec3d& x) const {
 
 bool SensorCone::onBoundary(const Vec3d& x) const {
   const Vec3d d = minus(x, apex_);
-  const double distance = norm(d), along = dot(d, axis_);
+  const double distance = norm(d);
   // A crossing's point comes from double inputs through long double roots: within a few hundred
   // units of 2^-53 of the coordinates' size for a simple root; 2^-40 of it (2^13 units) leaves room
-  // for a nearly double one. And 2^-30 of the distance, an angle of 2^-30 radians: the stationary
-  // point between two crossings that close (a cone within 2^-30 of a half-space, a circle barely
-  // dipping into the boundary) stands for both.
-  const double tolerance = 0x1p-40 * std::max(norm(x), norm(apex_)) + 0x1p-30 * distance;
-  return along >= -tolerance && std::abs(along - distance * cos_) <= tolerance;
+  // for a nearly double one. Seen from the apex that is an angle of 2^-40 size / distance. And 2^-30
+  // radians more: the stationary point between two crossings that close (a cone within 2^-30 of a
+  // half-space, a circle barely dipping into the boundary) stands for both. The angle itself by
+  // atan2, accurate at every angle (so that a thin cone's boundary is told from its axis).
+  const double position = 0x1p-40 * std::max(norm(x), norm(apex_));
+  if (distance <= position) return true;  // the apex itself, to the point's rounding
+  const double angle = std::atan2(norm(cross(d, axis_)), dot(d, axis_));
+  return std::abs(angle - halfAngle_) <= position / distance + 0x1p-30;
 }
 
 bool SensorCone::mayReach(const Vec3d& centre, double radius, double within) const {

@@ -346,6 +346,32 @@ TEST(ConeNearest, HalfSpacesAndApexesBesideEdgesAgainstADenseSearch) {
   EXPECT_GE(found.distance, double(sampled) - 2.0 / kSteps);
 }
 
+TEST(ConeNearest, ThinConesAndTheFarHalfOfACircle) {
+  // A second review's cases. A cone of half-angle 1e-6 beside a triangle's edge and a disc's rim
+  // 3e-5 off its axis: nothing inside it (a boundary test by the angle, not by cosines that a thin
+  // cone cannot tell apart).
+  for (const double half : {1e-6, 1e-7}) {
+    ConeNearest found;
+    app::nearestOnTriangle({Vec3d{-1, 3e-5, 1}, Vec3d{1, 3e-5, 1}, Vec3d{0, 1, 1}},
+                           SensorCone({0, 0, 0}, {0, 0, 1}, half), found);
+    EXPECT_EQ(found.distance, INFINITY) << half;
+    EXPECT_EQ(nearestOnRevolution({{1, 1}, {2, 1}}, SensorCone({0, 0, 0}, {1 - 3e-5, 0, 1}, half)).distance, INFINITY)
+        << half;
+  }
+  // The nearest point on a rim circle's half away from the apex's meridian (a large annulus far from
+  // the origin): the crossing of the circle with the boundary, where the dense search puts it.
+  const std::vector<Point2> annulus{{1443.2317527276505, 1176.5723620926933}, {665.29212409195759, 1176.5723620926933}};
+  const SensorCone cone({1208.2157525009984, -2462.8973761483808, -137.4615540604407},
+                        {-1822.4224502815041, 1974.1601497701906, 0}, 0.32481863266865385);
+  const ConeNearest found = nearestOnRevolution(annulus, cone);
+  const Sampled sampled = sampleRevolution(annulus, cone, 1 << 16, 64);
+  ASSERT_TRUE(std::isfinite(sampled.distance));
+  EXPECT_LE(found.distance, double(sampled.distance) + kExact * 4000);
+  EXPECT_GE(found.distance, double(sampled.distance) - sampled.spacing);
+  expectValidPoint(found, cone, 4000,
+                   meridianDistance(annulus, std::hypot(found.point[0], found.point[1]), found.point[2]), "far half");
+}
+
 TEST(ConeNearest, RandomTrianglesAgainstADenseSearch) {
   for (const std::uint64_t seed : testing::testSeeds({4, 5, 6})) {
     std::mt19937_64 random(seed);
