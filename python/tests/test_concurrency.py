@@ -1,4 +1,4 @@
-"""Queries racing additions (the issue's item 3): RaycastingScene is used from several Python threads
+"""Queries racing additions: RaycastingScene is used from several Python threads
 at once, every kind of query on some while another adds geometry of every kind (add_revolution with
 and without a transform, add_triangles, load). The rule: no crash, and every answer is one the scene
 could give at some moment: the probes never see the added geometry (it lies far away), so each

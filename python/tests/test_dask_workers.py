@@ -1,5 +1,5 @@
-"""examples/python/dask_lidar.py --scheduler ADDRESS against a scheduler with no workers (the issue's
-item 13): it says on stderr that it waits for workers, gives up after --wait-for-workers SECONDS
+"""examples/python/dask_lidar.py --scheduler ADDRESS against a scheduler with no workers:
+it says on stderr that it waits for workers, gives up after --wait-for-workers SECONDS
 (default 60) with a message and exit status 1, writing nothing; and a worker that joins while it
 waits is used. The scheduler is a real distributed.LocalCluster started here with no workers."""
 

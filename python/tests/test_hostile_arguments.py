@@ -1,4 +1,4 @@
-"""The package under hostile use (the issue "revolve under hostile use", items 1, 2 and 6 to 12): every
+"""The package under hostile use: every
 argument a caller can hand the bindings is either taken as documented or refused with a TypeError or
 ValueError naming the argument and the rule; never a crash, never pybind's internal errors, never a
 silently wrong answer. Calls that crashed the interpreter run in a child (isolated.py).

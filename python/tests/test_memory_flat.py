@@ -1,4 +1,4 @@
-"""Memory does not grow with the number of calls (the issue's item 4): a query or scan run on more
+"""Memory does not grow with the number of calls: a query or scan run on more
 than one thread, called over and over, holds the process at the same resident size. (Each threaded
 call used to leave a TBB task_arena behind, 5 to 7 KB at two threads, more with more.)
 

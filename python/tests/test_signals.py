@@ -1,4 +1,4 @@
-"""A scan file being written when the process is told to stop (the issue's item 5): SIGTERM leaves no
+"""A scan file being written when the process is told to stop: SIGTERM leaves no
 temporary (`scan.pcd.tmp-XXXX`) behind and the file already at the path untouched, as revolve-lidar
 does; SIGINT stays a KeyboardInterrupt the program can catch; a program's own SIGTERM handler still
 runs. The same for examples/python/dask_lidar.py stopped by SIGTERM in the middle of a scan.
