@@ -56,7 +56,10 @@ void runRange(const Options& options, bool pcdDataGiven) {
   }
   if (pcdDataGiven) throw std::runtime_error("--pcd-data applies to a lidar's .pcd scans, not to range sensors");
   if (!options.plot.empty() || options.plotRing)
-    throw std::runtime_error("--plot draws a lidar's scan; range sensors have no plot here (docs/robot.md draws one)");
+    throw std::runtime_error(
+        "--plot draws a lidar's scan; range sensors' readings are a table (bench/python/plot_sonar_ring.py shows how "
+        "to "
+        "draw them)");
   const io::SceneDescription description = io::readScene(options.scene);
   warnAboutScene(description);
   io::RangeSensorsDescription sensors = io::readRangeSensors(options.sensor);
