@@ -31,8 +31,11 @@ py::list additions(const RaycastingScene& scene) {
     out.append(py::make_tuple("revolution", points, transform, spline, tolerance));
   };
   const auto mesh = [&](const scene::TriangleMesh& triangles) {
-    py::array_t<float> vertices(std::vector<py::ssize_t>{py::ssize_t(triangles.vertices.size() / 3), 3});
-    std::copy(triangles.vertices.begin(), triangles.vertices.end(), vertices.mutable_data());
+    // The vertex buffer holds one float past the last vertex (Embree reads 16 bytes at a time): the
+    // vertices alone.
+    const std::size_t count = triangles.vertexCount();
+    py::array_t<float> vertices(std::vector<py::ssize_t>{py::ssize_t(count), 3});
+    std::copy_n(triangles.vertices.begin(), 3 * count, vertices.mutable_data());
     py::array_t<std::uint32_t> indices(std::vector<py::ssize_t>{py::ssize_t(triangles.triangles.size() / 3), 3});
     std::copy(triangles.triangles.begin(), triangles.triangles.end(), indices.mutable_data());
     out.append(py::make_tuple("triangles", vertices, indices));
