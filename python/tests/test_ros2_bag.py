@@ -436,10 +436,9 @@ def test_a_bag_stopped_by_a_signal_leaves_nothing(tmp_path, mode, stop, status):
 def test_the_example_writes_every_topic_of_the_robot(tmp_path):
     """Rule: examples/robot/write_bag.py writes scenes/robot_world.json along path.csv: a cloud, a pose,
     8 sonar ranges, an image and its CameraInfo a pose, and one /tf_static."""
-    import revolve
-
-    if not hasattr(revolve, "RangeSensors") or not (SOURCE_DIR / "examples" / "robot" / "sonar_ring.json").exists():
-        pytest.skip("the example needs revolve.RangeSensors and examples/robot/sonar_ring.json (range sensors), not in this build")
+    if os.environ.get("REVOLVE_SANITIZED"):
+        pytest.skip("the sanitizer suite's interpreter runs with the sanitizers' runtime preloaded, which the example "
+                    "passes on to revolve-render, whose own runtime then refuses to start; the Release suite runs it")
     out = tmp_path / "robot_bag"
     done = subprocess.run([sys.executable, str(SOURCE_DIR / EXAMPLE), "-o", str(out), "--spp", "1"], capture_output=True,
                           text=True, cwd=SOURCE_DIR)
