@@ -182,6 +182,23 @@ Sampled sampleRevolution(const std::vector<Point2>& profile, const SensorCone& c
   return result;
 }
 
+// The least distance from the apex to points of a barycentric grid of `steps` a side on the triangle
+// inside the cone, in long double.
+long double sampleTriangle(const std::array<Vec3d, 3>& triangle, const SensorCone& cone, int steps) {
+  long double sampled = INFINITY;
+  for (int i = 0; i <= steps; ++i) {
+    for (int j = 0; i + j <= steps; ++j) {
+      const long double u = static_cast<long double>(i) / steps, v = static_cast<long double>(j) / steps;
+      Long3 x;
+      for (std::size_t c = 0; c < 3; ++c)
+        x[c] = triangle[0][c] + u * (triangle[1][c] - triangle[0][c]) + v * (triangle[2][c] - triangle[0][c]);
+      long double distance;
+      if (insideCone(x, cone, distance)) sampled = std::min(sampled, distance);
+    }
+  }
+  return sampled;
+}
+
 // The distance from (rho, z) to the profile polyline in the meridian plane.
 double meridianDistance(const std::vector<Point2>& profile, double rho, double z) {
   double best = INFINITY;
@@ -329,18 +346,8 @@ TEST(ConeNearest, HalfSpacesAndApexesBesideEdgesAgainstADenseSearch) {
                              {0.77489702532187432, -0.72497001664501926, -0.20844700456343021}, kPi / 2);
   app::nearestOnTriangle(triangle, halfSpace, found);
   // The half-space's plane crosses edges 0-1 and 1-2; the nearest point inside it, by dense search.
-  long double sampled = INFINITY;
   constexpr int kSteps = 2000;
-  for (int i = 0; i <= kSteps; ++i) {
-    for (int j = 0; i + j <= kSteps; ++j) {
-      const long double u = static_cast<long double>(i) / kSteps, v = static_cast<long double>(j) / kSteps;
-      Long3 x;
-      for (std::size_t c = 0; c < 3; ++c)
-        x[c] = triangle[0][c] + u * (triangle[1][c] - triangle[0][c]) + v * (triangle[2][c] - triangle[0][c]);
-      long double distance;
-      if (insideCone(x, halfSpace, distance)) sampled = std::min(sampled, distance);
-    }
-  }
+  const long double sampled = sampleTriangle(triangle, halfSpace, kSteps);
   ASSERT_TRUE(std::isfinite(sampled));
   EXPECT_LE(found.distance, double(sampled) + kExact);
   EXPECT_GE(found.distance, double(sampled) - 2.0 / kSteps);
@@ -385,22 +392,12 @@ TEST(ConeNearest, RandomTrianglesAgainstADenseSearch) {
       app::nearestOnTriangle(triangle, cone, found);
       // Samples on a barycentric grid.
       constexpr int kSteps = 600;
-      long double sampled = INFINITY;
       double spacing = 0;
       for (int k = 0; k < 3; ++k) {
         const Vec3d e = app::minus(triangle[std::size_t((k + 1) % 3)], triangle[std::size_t(k)]);
         spacing = std::max(spacing, std::sqrt(app::dot(e, e)) / kSteps);
       }
-      for (int i = 0; i <= kSteps; ++i) {
-        for (int j = 0; i + j <= kSteps; ++j) {
-          const long double u = static_cast<long double>(i) / kSteps, v = static_cast<long double>(j) / kSteps;
-          Long3 x;
-          for (std::size_t c = 0; c < 3; ++c)
-            x[c] = triangle[0][c] + u * (triangle[1][c] - triangle[0][c]) + v * (triangle[2][c] - triangle[0][c]);
-          long double distance;
-          if (insideCone(x, cone, distance)) sampled = std::min(sampled, distance);
-        }
-      }
+      const long double sampled = sampleTriangle(triangle, cone, kSteps);
       const std::string what = "seed " + std::to_string(seed) + ", trial " + std::to_string(trial);
       if (std::isfinite(sampled)) {
         ASSERT_TRUE(std::isfinite(found.distance)) << what;

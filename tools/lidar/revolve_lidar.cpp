@@ -46,6 +46,15 @@ void warnAboutScene(const io::SceneDescription& description) {
   }
 }
 
+// The run's inputs, which no output may overwrite.
+void addInputs(io::OutputSet& outputs, const Options& options, const io::SceneDescription& description) {
+  outputs.addInput("the scene file", options.scene);
+  for (const io::SceneProfile& profile : description.profiles)
+    outputs.addInput("a profile CSV of the scene", profile.csvFile);
+  outputs.addInput("the sensor file (--sensor)", options.sensor);
+  outputs.addInput("the poses file (--poses)", options.poses);
+}
+
 // Range sensors (sonar, infrared): their readings at every pose as a CSV table.
 void runRange(const Options& options, bool pcdDataGiven) {
   const std::string& out = options.output;
@@ -66,11 +75,7 @@ void runRange(const Options& options, bool pcdDataGiven) {
   const std::vector<io::RobotPose> poses =
       options.poses.empty() ? std::vector<io::RobotPose>{io::RobotPose{}} : io::readPosesCsv(options.poses);
   io::OutputSet outputs;
-  outputs.addInput("the scene file", options.scene);
-  for (const io::SceneProfile& profile : description.profiles)
-    outputs.addInput("a profile CSV of the scene", profile.csvFile);
-  outputs.addInput("the sensor file (--sensor)", options.sensor);
-  outputs.addInput("the poses file (--poses)", options.poses);
+  addInputs(outputs, options, description);
   outputs.add("-o", out);
 
   robot::RangeSensors::Settings settings;
@@ -124,11 +129,7 @@ void run(const Options& options, bool pcdDataGiven) {
         " points; a scan holds at most 2^31 - 1 (PCD's point count, as PCL indexes it): split the poses");
   }
   io::OutputSet outputs;
-  outputs.addInput("the scene file", options.scene);
-  for (const io::SceneProfile& profile : description.profiles)
-    outputs.addInput("a profile CSV of the scene", profile.csvFile);
-  outputs.addInput("the sensor file (--sensor)", options.sensor);
-  outputs.addInput("the poses file (--poses)", options.poses);
+  addInputs(outputs, options, description);
   outputs.add("-o", options.output);
   if (!options.plot.empty()) outputs.add("--plot", options.plot);
 
