@@ -1,0 +1,77 @@
+#include "revolution_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace revolve::ospray_module {
+
+namespace {
+
+std::string splineKindsList() {
+  std::string names;
+  for (SplineKind kind :
+       {SplineKind::linear, SplineKind::quadratic, SplineKind::bezier, SplineKind::catmullRom, SplineKind::natural}) {
+    names += std::string(names.empty() ? "" : ", ") + "\"" + splineKindName(kind) + "\"";
+  }
+  return names;
+}
+
+Revolution buildOne(std::span<const Point2> points, const RevolutionParameters& parameters) {
+  if (!parameters.spline) {
+    if (parameters.tolerance) {
+      throw std::invalid_argument("'tolerance' is given without a 'spline': a polyline profile is traced exactly");
+    }
+    return Revolution{Shape(Profile(points)), std::nullopt, {}};
+  }
+  const std::optional<SplineKind> kind = splineKindNamed(*parameters.spline);
+  if (!kind) {
+    throw std::invalid_argument("'spline' is \"" + *parameters.spline + "\": it must be one of " + splineKindsList());
+  }
+  Spline curve(*kind, points);
+  if (!parameters.tolerance || *kind == SplineKind::linear)
+    return Revolution{Shape(std::move(curve)), std::nullopt, {}};
+  const double tolerance = *parameters.tolerance;
+  if (!Profile::toleranceAllowed(tolerance)) {
+    throw std::invalid_argument("'tolerance' is " + std::to_string(tolerance) + ": " + Profile::kToleranceRule);
+  }
+  Profile polyline = Profile::fromCurve(curve, tolerance);
+  ShadingNormals normals(polyline, curve);
+  std::vector<float> segmentStart;
+  const std::span<const double> arc = polyline.arcLength();
+  for (std::size_t i = 0; i + 1 < arc.size(); ++i) segmentStart.push_back(float(arc[i] / arc.back()));
+  return Revolution{Shape(std::move(polyline)), std::move(normals), std::move(segmentStart)};
+}
+
+}  // namespace
+
+std::optional<Vec3> Revolution::shadingNormal(float u, float v) const noexcept {
+  if (!curveNormals) return std::nullopt;
+  // v rounds to float: a hit near a vertex may land in the neighbouring segment, whose clamped
+  // curve normal there is the same point of the curve's (continuous away from its corners).
+  const auto after = std::upper_bound(segmentStart.begin(), segmentStart.end(), v);
+  const std::size_t segment = after == segmentStart.begin() ? 0 : std::size_t(after - segmentStart.begin()) - 1;
+  return curveNormals->normal(std::uint32_t(segment), u, v);
+}
+
+std::vector<Revolution> buildRevolutions(const RevolutionParameters& parameters) {
+  if (parameters.profiles.empty()) {
+    throw std::invalid_argument("'profile' is missing or empty: a revolution needs a profile of (r, z) points");
+  }
+  std::vector<Revolution> revolutions;
+  revolutions.reserve(parameters.profiles.size());
+  for (std::size_t i = 0; i < parameters.profiles.size(); ++i) {
+    try {
+      revolutions.push_back(buildOne(parameters.profiles[i], parameters));
+    } catch (const std::invalid_argument& error) {
+      const std::string where =
+          parameters.profiles.size() == 1 ? std::string("'profile'") : "'profile' " + std::to_string(i);
+      throw std::invalid_argument(where + ": " + error.what());
+    }
+  }
+  return revolutions;
+}
+
+}  // namespace revolve::ospray_module
