@@ -13,7 +13,9 @@
 #            pip: `pip install .` into a fresh virtual environment), Dask
 #            distributed and Open3D (compared against), Pillow (camera frames read into ROS 2 bags),
 #            and on Debian 13 rosbags (revolve.ros2's bags; Debian 12 has no python3-rosbags, and
-#            the bag tests skip there saying so)
+#            the bag tests skip there saying so), and on Debian 13 OSPRay 3 with its module SDK and
+#            ISPC (the OSPRay module, ospray/, and its tests; Debian 12 has no OSPRay 3, and
+#            they are left out there saying so)
 set -euo pipefail
 
 packages=(
@@ -46,7 +48,7 @@ case "$os_id $os_version" in
 esac
 
 if [[ "${1:-}" == --test && "$os_id $os_version" == "debian 13" ]]; then
-  packages+=(python3-rosbags)
+  packages+=(python3-rosbags libospray-dev ispc)
 fi
 
 missing=()

@@ -3,7 +3,9 @@
 # projects that find it with find_package(revolve), as a user's project does: a program that links
 # revolve::core without Embree, an application written in the native API of the Embree the library
 # was built with (consumer_embree3 or consumer_embree4), and the README's example program
-# (examples/library), so that none of them can rot.
+# (examples/library), so that none of them can rot. When the library was built with its OSPRay
+# module, an OSPRay program too (consumer_ospray), run with LD_LIBRARY_PATH on the folder the
+# package names, as docs/ospray.md tells a user to.
 # Usage: install_and_consume.sh <build-dir> <scratch-dir> <package-tests-dir> <project-dir>...
 set -euo pipefail
 build=$1 scratch=$2 here=$3
@@ -25,3 +27,11 @@ for project in "$here/consumer_core" "$here/consumer_embree$major" "$@"; do
   echo "== $name: $program"
   "$program"
 done
+if compgen -G "$scratch/prefix/lib*/libospray_module_revolve.so.*" >/dev/null; then
+  cmake -S "$here/consumer_ospray" -B "$scratch/consumer_ospray" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
+  cmake --build "$scratch/consumer_ospray" >/dev/null
+  echo "== consumer_ospray: LD_LIBRARY_PATH=$(cat "$scratch/consumer_ospray/module_dir.txt")"
+  LD_LIBRARY_PATH="$(cat "$scratch/consumer_ospray/module_dir.txt")" "$scratch/consumer_ospray/consumer_ospray"
+else
+  echo "== consumer_ospray: not run, the library was built without its OSPRay module"
+fi
