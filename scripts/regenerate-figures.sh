@@ -17,6 +17,12 @@ esac
 
 scripts/install-deps.sh --test
 targets=(--target revolve-render --target revolve-lidar --target _revolve)
+# The OSPRay example where OSPRay 3 is installed (Debian 13: install-deps.sh --test installs it).
+ospray=no
+if dpkg-query -W -f='${Status}' libospray-dev 2>/dev/null | grep -q "install ok installed"; then
+  ospray=yes
+  targets+=(--target revolve-ospray-scene)
+fi
 [[ $benchmarks == yes ]] && targets+=(--target revolve-bench --target revolve-lidar-bench)
 scripts/build.sh "${targets[@]}" -- -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_PYTHON=ON
 mkdir -p out
@@ -60,4 +66,11 @@ bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
 # revolve beside Open3D from Python (docs/python.md), from its committed results; measuring them
 # again needs Debian 13's Open3D (bench/python/open3d_compare.py says how).
 bench/python/plot_open3d_compare.py bench/results/python/open3d_compare.json docs/open3d_comparison.png
+# The patio through OSPRay's scivis renderer with the revolve module, beside docs/patio.png
+# (docs/ospray.md); OSPRay finds the module beside libospray as loaded from build/lib.
+if [[ $ospray == yes ]]; then
+  LD_LIBRARY_PATH="$PWD/build/lib" build/bin/revolve-ospray-scene scenes/patio.json -o docs/ospray_patio.png
+else
+  echo "docs/ospray_patio.png not regenerated: OSPRay 3 is not installed (Debian 13's libospray-dev)"
+fi
 echo "regenerated docs/*.png; look at them before committing"
