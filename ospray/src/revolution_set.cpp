@@ -1,6 +1,7 @@
 #include "revolution_set.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,25 +20,37 @@ std::string splineKindsList() {
   return names;
 }
 
-Revolution buildOne(std::span<const Point2> points, const RevolutionParameters& parameters) {
+// The shortest text that reads back as the same float: the value as the caller set it.
+std::string formatNumber(float value) {
+  char text[32];
+  const std::to_chars_result end = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, end.ptr);
+}
+
+// The parameters every profile shares, checked once: the spline kind, the tolerance.
+std::optional<SplineKind> checkedSplineKind(const RevolutionParameters& parameters) {
   if (!parameters.spline) {
     if (parameters.tolerance) {
       throw std::invalid_argument("'tolerance' is given without a 'spline': a polyline profile is traced exactly");
     }
-    return Revolution{Shape(Profile(points)), std::nullopt, {}};
+    return std::nullopt;
   }
   const std::optional<SplineKind> kind = splineKindNamed(*parameters.spline);
   if (!kind) {
     throw std::invalid_argument("'spline' is \"" + *parameters.spline + "\": it must be one of " + splineKindsList());
   }
-  Spline curve(*kind, points);
-  if (!parameters.tolerance || *kind == SplineKind::linear)
-    return Revolution{Shape(std::move(curve)), std::nullopt, {}};
-  const double tolerance = *parameters.tolerance;
-  if (!Profile::toleranceAllowed(tolerance)) {
-    throw std::invalid_argument("'tolerance' is " + std::to_string(tolerance) + ": " + Profile::kToleranceRule);
+  if (parameters.tolerance && !Profile::toleranceAllowed(*parameters.tolerance)) {
+    throw std::invalid_argument("'tolerance' is " + formatNumber(*parameters.tolerance) + ": " +
+                                Profile::kToleranceRule);
   }
-  Profile polyline = Profile::fromCurve(curve, tolerance);
+  return kind;
+}
+
+Revolution buildOne(std::span<const Point2> points, std::optional<SplineKind> kind, std::optional<float> tolerance) {
+  if (!kind) return Revolution{Shape(Profile(points)), std::nullopt, {}};
+  Spline curve(*kind, points);
+  if (!tolerance || *kind == SplineKind::linear) return Revolution{Shape(std::move(curve)), std::nullopt, {}};
+  Profile polyline = Profile::fromCurve(curve, *tolerance);
   ShadingNormals normals(polyline, curve);
   std::vector<float> segmentStart;
   const std::span<const double> arc = polyline.arcLength();
@@ -60,11 +73,12 @@ std::vector<Revolution> buildRevolutions(const RevolutionParameters& parameters)
   if (parameters.profiles.empty()) {
     throw std::invalid_argument("'profile' is missing or empty: a revolution needs a profile of (r, z) points");
   }
+  const std::optional<SplineKind> kind = checkedSplineKind(parameters);
   std::vector<Revolution> revolutions;
   revolutions.reserve(parameters.profiles.size());
   for (std::size_t i = 0; i < parameters.profiles.size(); ++i) {
     try {
-      revolutions.push_back(buildOne(parameters.profiles[i], parameters));
+      revolutions.push_back(buildOne(parameters.profiles[i], kind, parameters.tolerance));
     } catch (const std::invalid_argument& error) {
       const std::string where =
           parameters.profiles.size() == 1 ? std::string("'profile'") : "'profile' " + std::to_string(i);

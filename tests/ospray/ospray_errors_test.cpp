@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -23,6 +24,7 @@ class OsprayErrors : public ::testing::Test {
     ospCommit(geometry);
     const std::vector<ReportedError> errors = session.takeErrors();
     ASSERT_EQ(errors.size(), 1u) << "expected one error holding '" << parts.front() << "'";
+    std::printf("OSPRay error %d: %s\n", int(errors[0].code), errors[0].message.c_str());
     for (const std::string& part : parts) {
       EXPECT_NE(errors[0].message.find(part), std::string::npos)
           << "the message '" << errors[0].message << "' does not say '" << part << "'";
@@ -74,7 +76,7 @@ TEST_F(OsprayErrors, NotANumber) {
 TEST_F(OsprayErrors, UnknownSplineKind) {
   OSPGeometry geometry = withProfile(kCup);
   ospSetParam(geometry, "spline", OSP_STRING, "cubic");
-  expectError(geometry, {"'spline' is \"cubic\"", "\"catmull-rom\""});
+  expectError(geometry, {"revolution: 'spline' is \"cubic\"", "\"catmull-rom\""});
   ospRelease(geometry);
 }
 
@@ -82,7 +84,7 @@ TEST_F(OsprayErrors, ToleranceNotAPositiveNumber) {
   OSPGeometry geometry = withProfile(kCup);
   ospSetParam(geometry, "spline", OSP_STRING, "catmull-rom");
   ospSetFloat(geometry, "tolerance", -0.01f);
-  expectError(geometry, {"'tolerance' is -0.01", "finite number > 0"});
+  expectError(geometry, {"revolution: 'tolerance' is -0.01: ", "finite number > 0"});
   ospRelease(geometry);
 }
 
