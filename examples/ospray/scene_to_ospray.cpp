@@ -121,6 +121,9 @@ OsprayScene::OsprayScene(const io::SceneDescription& scene, int width, int heigh
     ospCommit(group);
     keep(group);
     OSPInstance instance = ospNewInstance(group);
+    // Its index as OSPRay's instance id (the OSP_FB_ID_INSTANCE channel): the scene's object
+    // numbering, quads after the objects, as revolve-render's picking counts them.
+    ospSetInt(instance, "id", int(instances_.size()));
     if (affine != nullptr) ospSetParam(instance, "transform", OSP_AFFINE3F, affine);
     ospCommit(instance);
     instances_.push_back(OSPInstance(keep(instance)));

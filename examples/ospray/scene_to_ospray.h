@@ -25,7 +25,8 @@ class OsprayScene {
 
   OSPWorld world() const { return world_; }
   OSPCamera camera() const { return camera_; }
-  // The world's instances: one per scene object, in the scene's order, then the quads' (if any).
+  // The world's instances: one per scene object, in the scene's order, then the quads' (if any);
+  // each has its index here as its OSPRay "id".
   const std::vector<OSPInstance>& instances() const { return instances_; }
   // Bytes of the surfaces' own description handed to OSPRay: revolve's shapes (search trees), or
   // the meshes' vertices and indices. OSPRay's BVH over them is not included.
