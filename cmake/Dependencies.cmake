@@ -117,6 +117,11 @@ if(REVOLVE_BUILD_OSPRAY STREQUAL "ON" OR (REVOLVE_BUILD_OSPRAY STREQUAL "AUTO" A
     set(missing "Embree 4 (OSPRay 3 traces with it; this build uses Embree ${embree_VERSION})")
   else()
     include(CheckLanguage)
+    # check_language caches a compiler it did not find and never looks again: look again, so that
+    # installing ispc after a first configure is enough.
+    if(NOT CMAKE_ISPC_COMPILER)
+      unset(CMAKE_ISPC_COMPILER CACHE)
+    endif()
     check_language(ISPC)
     if(NOT CMAKE_ISPC_COMPILER)
       set(missing "the ISPC compiler (Debian 13: ispc)")
