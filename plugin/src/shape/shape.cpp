@@ -147,7 +147,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.length = table.length;
     c.arcOffset = std::uint32_t(arcTable.size());
     c.arcSteps = table.steps;
-    arcTable.insert(arcTable.end(), table.interleaved.begin(), table.interleaved.end());
+    arcTable.insert(arcTable.end(), table.cumulative.begin(), table.cumulative.end());
     knots.push_back({c.r[3], c.z[3]});
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
@@ -160,9 +160,8 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.v0 = arc[k] / total;
     c.dv = c.length / total;
     double* entry = &arcTable[c.arcOffset];
-    for (std::uint32_t i = 0; i <= c.arcSteps; ++i)
-      entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
-    entry[2 * c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
+    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[i] = c.v0 + entry[i] / total;
+    entry[c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
   }
 
   std::vector<Point2> global;
@@ -174,7 +173,9 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
   impl.arcTable = std::move(arcTable);
+  impl.arcTable.shrink_to_fit();  // grown by insertion: its slack would be a third of it
   impl.local = std::move(knots);
+  impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
   impl.segments.reserve(impl.parts.size());
   for (std::size_t k = 0; k < impl.parts.size(); ++k) {
