@@ -43,7 +43,7 @@ def main(count, way):
         for i in range(count):
             scene.add_revolution(points[i], transform=transforms[i])
     added = time.perf_counter() - start
-    ray = np.array([[-1.0, 0.625 * side, 0.5, 1, 0, 0]], np.float32)
+    ray = np.array([[-1.0, 0.0, 0.5, 1, 0, 0]], np.float32)  # along the first row: object 0 first
     hit = scene.cast_rays(ray)
     first = time.perf_counter() - start
     record = dict(objects=count, way=way, add_seconds=added, first_ray_seconds=first,
