@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace revolve {
 namespace {
@@ -37,6 +38,20 @@ void buildSearch(detail::ShapeImpl& impl, const BuildOptions& options, std::span
     impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
   }
   if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+  // Each array at its size: the trees grow theirs level by level, and a scene of a million shapes
+  // pays for every element of slack.
+  impl.mibit.nodes.shrink_to_fit();
+  impl.mibit.intervals.shrink_to_fit();
+  impl.mibit.implicitShells.shrink_to_fit();
+  detail::WideTree& w = impl.wide;
+  w.nodes.shrink_to_fit();
+  w.leaves.shrink_to_fit();
+  w.childRef.shrink_to_fit();
+  for (std::vector<float>* v :
+       {&w.childZLow, &w.childZHigh, &w.childLow2, &w.childHigh2, &w.segmentZLow, &w.segmentZHigh, &w.segmentLow2,
+        &w.segmentHigh2, &w.runZLow, &w.runZHigh, &w.runLow2, &w.runHigh2})
+    v->shrink_to_fit();
+  impl.strips.nodes.shrink_to_fit();
 }
 
 // A part whose inner control points lie within a few roundings of its chord (2^-50 of the
