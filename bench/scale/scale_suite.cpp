@@ -12,15 +12,17 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
-
 #include <unistd.h>
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace revolve::bench {
