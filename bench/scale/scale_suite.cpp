@@ -6,8 +6,6 @@
 #include "scene/embree_scene.h"
 #include "shape/shape_impl.h"
 
-#include <revolve/embree_baselines.h>
-
 #include <sys/resource.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
