@@ -1,7 +1,7 @@
 // revolve-bench: speed against error, side by side, on the same rays.
 //
-//   revolve-bench [speed-error | scaling | paper-table | pov | pov-scaling] [--quick] [--json FILE] [--csv FILE]
-//   [options]
+//   revolve-bench [speed-error | scaling | paper-table | pov | pov-scaling | scale] [--quick] [--json FILE] [--csv
+//   FILE] [options]
 //
 // speed-error traces five smooth test shapes with MIBIT (each shell kind) at increasing profile
 // resolution, with Embree triangle meshes over a grid of profile points x slices, with the linear
@@ -12,12 +12,14 @@
 // MIBIT against the best mesh and Embree's curves at each error level. scaling measures throughput
 // against the number of profile points, 16 to 32,768. With no subcommand both run. paper-table
 // reproduces Baciu, Jia & Lam 2001's Tables 2 and 4 on the patio (paper_table.h); pov and
-// pov-scaling measure revolve beside POV-Ray 3.7 (pov_compare.h).
+// pov-scaling measure revolve beside POV-Ray 3.7 (pov_compare.h). scale builds N distinct objects
+// as exact surfaces or meshes: build time, memory, time to the first ray, throughput (scale/scale_suite.h).
 #include "paper_table.h"
 #include "pov_compare.h"
 #include "povray.h"
 #include "report.h"
 #include "run_info.h"
+#include "scale/scale_suite.h"
 #include "suites.h"
 
 #include "cli/command_line.h"
@@ -107,6 +109,20 @@ int main(int argc, char** argv) {
   povScale->add_option("--out", povScaling.outDirectory, "folder for the SDL and images")
       ->check(app::kNonEmpty)
       ->capture_default_str();
+  ScaleSettings scale;
+  std::string scaleGeometry = "revolve";
+  CLI::App* scaleRun = cli.add_subcommand(
+      "scale",
+      "N distinct 64-point revolutions, exact or meshed at matched error: build, memory, first ray, throughput");
+  scaleRun->add_option("--objects", scale.objects, "how many objects")
+      ->check(app::wholeNumberIn<std::size_t>(1, 100000000))
+      ->capture_default_str();
+  scaleRun->add_option("--geometry", scaleGeometry, "revolve (exact) or mesh (Embree triangles)")
+      ->check(CLI::IsMember({"revolve", "mesh"}))
+      ->capture_default_str();
+  scaleRun->add_option("--lidar", scale.lidarAzimuths, "lidar azimuth steps (32 rings each)")
+      ->check(app::wholeNumberIn(1, 1000000))
+      ->capture_default_str();
   cli.require_subcommand(0, 1);
   if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-bench")) return *status;
 
@@ -157,6 +173,20 @@ int main(int argc, char** argv) {
       outputs.stream(jsonPath).write(document.dump(2) + "\n");
       outputs.commit();
     };
+    if (scaleRun->parsed()) {
+      if (!csvPath.empty() || cli.count("--rays") > 0 || cli.count("--min-time") > 0)
+        throw std::runtime_error("--csv, --rays and --min-time belong to speed-error and scaling");
+      scale.mesh = scaleGeometry == "mesh";
+      scale.seed = settings.seed;
+      scale.repetitions = repetitionsFor(settings.repetitions);
+      if (!camera.empty()) scale.cameraWidth = settings.cameraWidth, scale.cameraHeight = settings.cameraHeight;
+      nlohmann::ordered_json document = runInfo(commandLine);
+      document.update(runScale(scale));
+      finishRunInfo(document);
+      printScale(stdout, document);
+      writeDocument(document);
+      return;
+    }
     if (paperTable->parsed()) {
       paper.repetitions = repetitionsFor(paper.repetitions);
       if (settings.quick && paperTable->count("--size") == 0) paper.size = 24;

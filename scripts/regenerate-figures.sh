@@ -38,6 +38,9 @@ if [[ $benchmarks == yes ]]; then
   build/bin/revolve-bench pov --scene scenes/vessels.json --json bench/results/pov-vessels.json \
     --figure docs/pov_vessels.png | tee bench/results/pov-vessels.txt
   build/bin/revolve-bench pov-scaling --json bench/results/pov-scaling.json | tee bench/results/pov-scaling.txt
+  # Scenes of many distinct objects (docs/performance.md): one process a run, about 15 minutes.
+  bench/python/scale_ladder.py build/bin/revolve-bench bench/results/scale/scale.json \
+    --counts 100,1000,10000,100000,300000 --runs 3 --mesh-limit-gb 8
 fi
 
 # The patio as scripts/main.sh renders it (README, "revolve-render").
@@ -63,6 +66,7 @@ PYTHONPATH=build/python /usr/bin/python3 bench/python/plot_sonar_ring.py docs/so
 # Speed, memory and scaling against error (README, "Performance"), from the committed results.
 bench/plot_results.py bench/results/revolve-bench.json docs/
 bench/plot_pov_scaling.py bench/results/pov-scaling.json docs/pov_scaling.png
+bench/python/plot_scale.py bench/results/scale/scale.json docs/scale_objects.png | tee bench/results/scale/scale.txt
 # revolve beside Open3D from Python (docs/python.md), from its committed results; measuring them
 # again needs Debian 13's Open3D (bench/python/open3d_compare.py says how).
 bench/python/plot_open3d_compare.py bench/results/python/open3d_compare.json docs/open3d_comparison.png

@@ -106,9 +106,14 @@ struct EmbreeScene::Prototype {
   std::optional<revolve::Geometry> filtered;
   app::Scene filteredScene;
 
-  // A scene file's profile, as `settings` build it, in a scene of its own.
+  // A scene file's profile, as `settings` build it, in a scene of its own. An exact surface keeps
+  // no copy of the polyline (its shape holds it), and an exact spline no shading normals (its
+  // geometric normal is smooth already): a scene of a million objects pays for neither.
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
-      : profile(source.profile), normals(shadingNormalsOf(source)), scene(app::newScene(device)) {
+      : scene(app::newScene(device)) {
+    const bool exact = !settings.mesh && !settings.embreeCone;
+    if (!exact) profile.emplace(source.profile);
+    if (!exact || !source.spline) normals.emplace(shadingNormalsOf(source));
     if (settings.mesh) {
       slices = settings.slices;
       mesh = newTessellatedGeometry(device, *profile, slices);
@@ -124,7 +129,7 @@ struct EmbreeScene::Prototype {
       geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
       rtcAttachGeometry(scene.get(), geometry->handle());
     } else {
-      shape.emplace(*profile, settings.options);
+      shape.emplace(source.profile, settings.options);
       geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
       rtcAttachGeometry(scene.get(), geometry->handle());
     }
@@ -296,6 +301,27 @@ std::uint32_t EmbreeScene::addRevolution(Shape shape, const app::Placement& plac
   const bool direct = layout_.identityUninstanced && placement.isIdentity();
   prototypes_.push_back(std::make_unique<Prototype>(std::move(shape), device_.get(), !direct));
   return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
+}
+
+std::uint32_t EmbreeScene::addRevolutions(std::vector<Shape> shapes, std::span<const app::Placement> placements) {
+  if (shapes.size() != placements.size()) throw std::invalid_argument("addRevolutions: a placement for every shape");
+  if (geometries_.size() + shapes.size() >= RTC_INVALID_GEOMETRY_ID)
+    throw std::length_error("a scene holds at most 2^32 - 1 geometries");
+  const std::size_t first = prototypes_.size();
+  prototypes_.resize(first + shapes.size());
+  try {
+    tbb::parallel_for(std::size_t{0}, shapes.size(), [&](std::size_t i) {
+      const bool direct = layout_.identityUninstanced && placements[i].isIdentity();
+      prototypes_[first + i] = std::make_unique<Prototype>(std::move(shapes[i]), device_.get(), !direct);
+    });
+  } catch (...) {
+    prototypes_.resize(first);  // nothing added
+    throw;
+  }
+  const auto firstId = std::uint32_t(geometries_.size());
+  instances_.reserve(instances_.size() + shapes.size());
+  for (std::size_t i = 0; i < shapes.size(); ++i) addInstance(std::uint32_t(first + i), placements[i], 0);
+  return firstId;
 }
 
 std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material,
@@ -716,6 +742,11 @@ std::size_t EmbreeScene::revolveBytes() const noexcept {
     if (prototype->shape) bytes += prototype->shape->memoryBytes();
   }
   return bytes;
+}
+
+std::size_t EmbreeScene::recordBytes() const noexcept {
+  return instances_.capacity() * sizeof(Instance) + geometries_.capacity() * sizeof(Geometry) +
+         prototypes_.capacity() * sizeof(std::unique_ptr<Prototype>) + prototypes_.size() * sizeof(Prototype);
 }
 
 std::int64_t EmbreeScene::embreeBytes() const noexcept { return memory_->current.load(); }

@@ -101,6 +101,10 @@ class EmbreeScene {
   // Adds a surface of revolution traced exactly, placed by `placement`; returns its geometry id.
   // Not thread-safe: no query may run meanwhile.
   std::uint32_t addRevolution(Shape shape, const app::Placement& placement, std::uint32_t material = 0);
+  // Adds many surfaces of revolution at once, shapes[i] placed by placements[i] (as many of each):
+  // their Embree geometries are built in parallel, and the ids are consecutive, the first returned.
+  // Not thread-safe, as addRevolution.
+  std::uint32_t addRevolutions(std::vector<Shape> shapes, std::span<const app::Placement> placements);
   // Adds a triangle mesh whose indices the caller has checked against its vertices; returns its
   // geometry id. Not thread-safe, as addRevolution.
   std::uint32_t addTriangles(std::span<const float> vertices, std::span<const std::uint32_t> triangles);
@@ -154,6 +158,8 @@ class EmbreeScene {
   std::size_t treeNodeCount() const noexcept;
   std::size_t revolveBytes() const noexcept;  // Shapes and shading normals
   std::size_t meshBytes() const noexcept;     // the triangle meshes' arrays
+  // The scene's own records of its objects and prototypes (placements, ids, handles).
+  std::size_t recordBytes() const noexcept;
   std::int64_t embreeBytes() const noexcept;  // Embree's own allocations now (its memory monitor)
   std::int64_t embreePeakBytes() const noexcept;
   double buildSeconds() const noexcept { return buildSeconds_; }

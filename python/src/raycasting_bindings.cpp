@@ -13,11 +13,13 @@
 #include "scene/degenerate_objects.h"
 
 #include <pybind11/stl.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <span>
@@ -38,44 +40,66 @@ void refuse(const QueryArray& in, const char* name, std::size_t index, bool rays
 }
 
 // The shape; `recipe` receives its points, spline and tolerance as taken (what a pickle keeps).
+// The spline kind and tolerance add_revolution and add_revolutions take, checked: a tolerance
+// needs a spline, and is held to the rule every tool applies (io/curve_tolerance.h).
+struct CurveOptions {
+  std::optional<std::string> spline;
+  std::optional<SplineKind> kind;
+  std::optional<double> tolerance;
+};
+CurveOptions curveOptionsOf(py::handle splineObject, py::handle toleranceObject) {
+  CurveOptions options{optionalText(splineObject, "spline"), std::nullopt, optionalReal(toleranceObject, "tolerance")};
+  if (options.tolerance) {
+    if (const std::optional<std::string> fault =
+            io::toleranceFault(*options.tolerance, std::string(py::repr(toleranceObject)))) {
+      throw py::value_error("tolerance: " + *fault);
+    }
+  }
+  if (!options.spline) {
+    if (options.tolerance) {
+      throw py::value_error(
+          "tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
+          "a polyline is traced as given");
+    }
+    return options;
+  }
+  options.kind = splineKindNamed(*options.spline);
+  if (!options.kind) {
+    throw py::value_error("spline = \"" + *options.spline + "\"" +
+                          ": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
+  }
+  return options;
+}
+
+// The shape of one profile as `options` say; the points' warnings in `warnings`. Plain C++ (no
+// Python object): add_revolutions runs it on TBB's threads without the GIL. Throws ProfileError,
+// or std::invalid_argument for a tolerance this curve cannot take.
+Shape builtShape(std::span<const Point2> points, const CurveOptions& options, std::vector<ProfileWarning>& warnings) {
+  if (!options.kind) {
+    Profile profile(points);
+    warnings = profile.warnings();
+    return Shape(std::move(profile));
+  }
+  Spline curve(*options.kind, points);
+  warnings = curve.warnings();
+  if (options.tolerance) return Shape(io::curvePolyline(curve, *options.tolerance));
+  return Shape(std::move(curve));
+}
+
 Shape shapeOf(py::handle pointsObject, py::handle splineObject, py::handle toleranceObject,
               Scene::RevolutionRecipe& recipe) {
   const py::array_t<double> array = copiedMatrix(pointsObject, "points", -1, 2, 0, false);
   std::vector<Point2> points(std::size_t(array.shape(0)));
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {array.at(i, 0), array.at(i, 1)};
-  const std::optional<std::string> spline = optionalText(splineObject, "spline");
-  const std::optional<double> tolerance = optionalReal(toleranceObject, "tolerance");
+  const CurveOptions options = curveOptionsOf(splineObject, toleranceObject);
   recipe.points.assign(array.data(), array.data() + array.size());
-  recipe.spline = spline;
-  recipe.tolerance = tolerance;
-  if (tolerance) {
-    if (const std::optional<std::string> fault =
-            io::toleranceFault(*tolerance, std::string(py::repr(toleranceObject)))) {
-      throw py::value_error("tolerance: " + *fault);
-    }
-  }
+  recipe.spline = options.spline;
+  recipe.tolerance = options.tolerance;
   try {
-    if (!spline) {
-      if (tolerance) {
-        throw py::value_error(
-            "tolerance applies to a spline profile (spline=\"catmull-rom\", ...), sampled within it; "
-            "a polyline is traced as given");
-      }
-      Profile profile(points);
-      warnAbout(profile.warnings(), "points");
-      return Shape(std::move(profile));
-    }
-    const std::optional<SplineKind> kind = splineKindNamed(*spline);
-    if (!kind) {
-      throw py::value_error("spline = \"" + *spline + "\"" +
-                            ": not a spline kind; expected linear, quadratic, bezier, catmull-rom or natural");
-    }
-    Spline curve(*kind, points);
-    warnAbout(curve.warnings(), "points");
-    // A tolerance is held to the rule every tool applies: one that collapses the curve onto the
-    // axis, a surface nothing hits, is refused (io/curve_tolerance.h).
-    if (tolerance) return Shape(io::curvePolyline(curve, *tolerance));
-    return Shape(std::move(curve));
+    std::vector<ProfileWarning> warnings;
+    Shape shape = builtShape(points, options, warnings);
+    warnAbout(warnings, "points");
+    return shape;
   } catch (const ProfileError& error) {
     throw ProfileError(error.rule(), error.index(), std::string("points: ") + error.what());
   } catch (const std::invalid_argument& error) {  // the tolerance, for this curve
@@ -110,6 +134,103 @@ app::Placement placementFrom(py::handle transform, const Shape& shape, std::arra
   const py::array_t<double> matrix = copiedMatrix(transform, "transform", 4, 4);
   std::copy(matrix.data(), matrix.data() + 16, rows.begin());
   return placementOf(matrix.data(), shape, "transform");
+}
+
+// add_revolutions: N profiles and N placements in one call. The arrays are read with the GIL, the
+// shapes built on TBB's threads without it, then checked in order, so that the first bad object
+// (by index) is the one named, and nothing is added unless every object can be.
+py::array_t<std::uint32_t> addRevolutions(Scene& scene, py::handle pointsObject, py::handle transformsObject,
+                                          py::handle splineObject, py::handle toleranceObject) {
+  // The profiles: an array of shape (N, P, 2), or a sequence of N arrays of shape (P_i, 2).
+  std::vector<std::vector<Point2>> profiles;
+  const auto name = [](const char* what, std::size_t i) { return std::string(what) + "[" + std::to_string(i) + "]"; };
+  if (py::isinstance<py::array>(pointsObject) && py::reinterpret_borrow<py::array>(pointsObject).ndim() == 3) {
+    const py::array given = py::reinterpret_borrow<py::array>(pointsObject);
+    if (given.dtype().kind() != 'f' && given.dtype().kind() != 'i' && given.dtype().kind() != 'u')
+      throw py::type_error("points: dtype " + std::string(py::str(given.dtype())) + "; expected a real array");
+    if (given.shape(2) != 2) throw py::value_error("points: shape " + shapeText(given) + "; expected (N, P, 2)");
+    const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+    const std::size_t rows = std::size_t(given.shape(1));
+    profiles.resize(std::size_t(given.shape(0)));
+    for (std::size_t i = 0; i < profiles.size(); ++i) {
+      profiles[i].resize(rows);
+      for (std::size_t k = 0; k < rows; ++k) profiles[i][k] = {values.at(i, k, 0), values.at(i, k, 1)};
+    }
+  } else {
+    if (!py::isinstance<py::sequence>(pointsObject) || py::isinstance<py::str>(pointsObject))
+      throw py::type_error("points: expected an array of shape (N, P, 2) or a sequence of (P, 2) arrays");
+    const py::sequence sequence = py::reinterpret_borrow<py::sequence>(pointsObject);
+    profiles.resize(std::size_t(py::len(sequence)));
+    for (std::size_t i = 0; i < profiles.size(); ++i) {
+      const std::string label = name("points", i);
+      const py::array_t<double> array = copiedMatrix(sequence[i], label.c_str(), -1, 2, 0, false);
+      profiles[i].resize(std::size_t(array.shape(0)));
+      for (std::size_t k = 0; k < profiles[i].size(); ++k) profiles[i][k] = {array.at(k, 0), array.at(k, 1)};
+    }
+  }
+  const std::size_t count = profiles.size();
+  // The placements: an array of shape (N, 4, 4), or none (the identity for all).
+  std::vector<std::array<double, 16>> rows(count, {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+  if (!transformsObject.is_none()) {
+    const py::array given = arrayArgument(transformsObject, "transforms", "a real array of shape (N, 4, 4)");
+    if (given.dtype().kind() != 'f' && given.dtype().kind() != 'i' && given.dtype().kind() != 'u')
+      throw py::type_error("transforms: dtype " + std::string(py::str(given.dtype())) + "; expected a real array");
+    if (given.ndim() != 3 || std::size_t(given.shape(0)) != count || given.shape(1) != 4 || given.shape(2) != 4) {
+      throw py::value_error("transforms: shape " + shapeText(given) + "; expected (" + std::to_string(count) +
+                            ", 4, 4), one matrix a profile");
+    }
+    const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+    for (std::size_t i = 0; i < count; ++i)
+      std::copy(values.data() + 16 * i, values.data() + 16 * (i + 1), rows[i].begin());
+  }
+  const CurveOptions options = curveOptionsOf(splineObject, toleranceObject);
+
+  std::vector<std::optional<Shape>> shapes(count);
+  std::vector<std::vector<ProfileWarning>> warnings(count);
+  std::vector<std::exception_ptr> faults(count);
+  {
+    py::gil_scoped_release release;
+    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+      try {
+        shapes[i].emplace(builtShape(profiles[i], options, warnings[i]));
+      } catch (...) {
+        faults[i] = std::current_exception();
+      }
+    });
+  }
+  std::vector<Shape> built;
+  std::vector<app::Placement> placements;
+  std::vector<Scene::RevolutionRecipe> recipes(count);
+  built.reserve(count);
+  placements.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string label = name("points", i);
+    if (faults[i]) {
+      try {
+        std::rethrow_exception(faults[i]);
+      } catch (const ProfileError& error) {
+        throw ProfileError(error.rule(), error.index(), label + ": " + error.what());
+      } catch (const std::invalid_argument& error) {  // the tolerance, for this curve
+        throw py::value_error("tolerance, for " + label + ": " + error.what());
+      }
+    }
+    warnAbout(warnings[i], label.c_str());
+    placements.push_back(placementOf(rows[i].data(), *shapes[i], name("transforms", i).c_str()));
+    for (const Point2& p : profiles[i]) recipes[i].points.insert(recipes[i].points.end(), {p.r, p.z});
+    recipes[i].spline = options.spline;
+    recipes[i].tolerance = options.tolerance;
+    recipes[i].rows = rows[i];
+    built.push_back(std::move(*shapes[i]));
+    shapes[i].reset();
+  }
+  std::uint32_t first = 0;
+  {
+    py::gil_scoped_release release;
+    first = scene.addRevolutions(std::move(built), placements, std::move(recipes));
+  }
+  auto ids = py::array_t<std::uint32_t>(py::ssize_t(count));
+  for (std::size_t i = 0; i < count; ++i) ids.mutable_data()[i] = first + std::uint32_t(i);
+  return ids;
 }
 
 std::uint32_t addTriangles(Scene& scene, py::handle verticesObject, py::handle trianglesObject) {
@@ -387,6 +508,15 @@ transform: 4x4 affine object-to-world matrix (default: the identity).
 spline: "linear", "quadratic", "bezier", "catmull-rom" or "natural": the curve is traced exactly,
     or, with `tolerance`, as the fewest polyline points within that distance of it.
 Raises ProfileError (a ValueError) naming the point and the rule for a bad profile.)");
+  scene.def("add_revolutions", &addRevolutions, py::arg("points"), py::arg("transforms") = py::none(),
+            py::arg("spline") = py::none(), py::arg("tolerance") = py::none(),
+            R"(Adds many surfaces of revolution in one call; returns their geometry ids (uint32, consecutive).
+
+points: (N, P, 2) array of profiles, or a sequence of N (P_i, 2) arrays, each as add_revolution's.
+transforms: (N, 4, 4) array of object-to-world matrices (default: the identity for all).
+spline, tolerance: as add_revolution's, the same for every profile.
+The shapes are built in parallel. Nothing is added if any profile or matrix is refused: the error
+names the first (points[i] or transforms[i]) and the rule it breaks.)");
   scene.def("add_triangles", &addTriangles, py::arg("vertex_positions"), py::arg("triangle_indices"),
             "Adds a triangle mesh ((N, 3) vertices, (M, 3) vertex indices); returns its geometry id.");
   scene.def("load", &load, py::arg("path"),

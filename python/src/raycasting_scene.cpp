@@ -205,6 +205,18 @@ std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& 
   return id;
 }
 
+std::uint32_t RaycastingScene::addRevolutions(std::vector<Shape> shapes, std::span<const app::Placement> placements,
+                                              std::vector<RevolutionRecipe> recipes) {
+  std::unique_lock lock(mutex_);
+  const std::size_t count = shapes.size();
+  const std::uint32_t first = scene_.addRevolutions(std::move(shapes), placements);
+  recipes_.resize(std::size_t(first) + count);
+  for (std::size_t i = 0; i < count; ++i) recipes_[first + i] = std::move(recipes[i]);
+  committed_ = false;
+  countingCurrent_ = false;
+  return first;
+}
+
 void RaycastingScene::forEachAddition(const std::function<void(const RevolutionRecipe&)>& revolution,
                                       const std::function<void(const scene::TriangleMesh&)>& mesh) const {
   std::shared_lock lock(mutex_);

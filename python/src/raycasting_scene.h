@@ -50,6 +50,10 @@ class RaycastingScene {
     std::array<double, 16> rows{};  // the 4x4 object-to-world matrix, row by row
   };
   std::uint32_t addRevolution(Shape shape, const app::Placement& placement, RevolutionRecipe recipe);
+  // Many revolutions at once (add_revolutions), each with its recipe: their Embree geometries built
+  // in parallel; the ids are consecutive, the first returned.
+  std::uint32_t addRevolutions(std::vector<Shape> shapes, std::span<const app::Placement> placements,
+                               std::vector<RevolutionRecipe> recipes);
   // Calls `revolution` or `mesh` for each geometry in id order, under the lock additions take
   // shared: what rebuilds the scene addition by addition. Throws std::logic_error for a revolution
   // added without its recipe.

@@ -196,5 +196,43 @@ TEST(RevolveBenchTest, BadCameraSizeIsAnErrorAndWritesNothing) {
   EXPECT_TRUE(scratch.entries().empty());
 }
 
+TEST(RevolveBenchTest, ScaleReportsEveryFigureAndMeshesMatchTheExactSurfaces) {
+  // The same 60 objects, exact and meshed at matched error (a 64-point polyline's own error, about
+  // 2e-3 of an object): the same rays hit the same objects but where the meshes' facets cut a
+  // silhouette, a thin band, so the hit counts agree within 2%.
+  const ScratchDirectory scratch;
+  std::map<std::string, json> runs;
+  for (const std::string geometry : {"revolve", "mesh"}) {
+    const std::string jsonPath = scratch / (geometry + ".json");
+    const auto run = runProcess(REVOLVE_BENCH_PATH, {"scale", "--quick", "--objects", "60", "--geometry", geometry,
+                                                     "--lidar", "256", "--json", jsonPath});
+    ASSERT_EQ(run.status, 0) << run.err;
+    runs[geometry] = json::parse(revolve::testing::readWholeFile(jsonPath));
+    const json& document = runs[geometry];
+    expectFinite(document, "", {});
+    EXPECT_EQ(document["objects"], 60);
+    EXPECT_EQ(document["refused_rays"], 0);
+    EXPECT_GT(document["build_seconds"].get<double>(), 0.0);
+    EXPECT_GE(document["first_ray_seconds"].get<double>(), document["build_seconds"].get<double>());
+    EXPECT_GT(document["memory"]["peak_resident_bytes"].get<double>(), 0.0);
+    EXPECT_GT(document["camera"]["hits"].get<double>(), 0.1 * document["camera"]["rays"].get<double>());
+  }
+  const json& exact = runs["revolve"];
+  // The breakdown adds up to the shape's own count.
+  for (const char* kind : {"polyline", "spline"}) {
+    const json& parts = exact["shape_bytes"][kind];
+    double sum = 0;
+    for (const char* part :
+         {"shape_struct", "profile_points", "profile_arc_lengths", "profile_source_indices", "local_points",
+          "segment_frames", "mibit_tree", "wide_tree", "curve_parts", "arc_tables", "spline"})
+      sum += parts[part].get<double>();
+    EXPECT_EQ(sum, parts["total"].get<double>()) << kind;
+  }
+  for (const char* rays : {"camera", "lidar"}) {
+    const double a = exact[rays]["hits"].get<double>(), b = runs["mesh"][rays]["hits"].get<double>();
+    EXPECT_LE(std::abs(a - b), 0.02 * a) << rays << ": " << a << " exact hits, " << b << " on meshes";
+  }
+}
+
 }  // namespace
 }  // namespace revolve::bench

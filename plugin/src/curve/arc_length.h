@@ -1,5 +1,5 @@
 // Arc length of a cubic Bezier part by Gauss-Legendre quadrature of |c'(u)|, and v at a hit from a
-// table of it. A monotone part turns by less than a right angle (its tangent keeps to one
+// coarse table of it. A monotone part turns by less than a right angle (its tangent keeps to one
 // quadrant), so |c'| is smooth on it and a few nodes integrate it to rounding.
 #pragma once
 
@@ -29,16 +29,14 @@ inline double arcLengthBetween(const double r[4], const double z[4], double a, d
   return half * sum;
 }
 
-// v at u from a table of v and dv/du at `steps` equal steps of [0, 1], interleaved: cubic Hermite
-// interpolation (the table is made fine enough for it: arc_table.h).
-inline double hermiteAt(const double* table, std::uint32_t steps, double u) noexcept {
+// v at u from a part's table of v at `steps` equal steps of [0, 1] (arc_table.h): the step's entry
+// plus the arc length from its start to u by one five-point rule, times `scale` (v per unit of
+// length). The table is made fine enough for that rule: within 2^-30 of the part's length.
+inline double arcLengthFrom(const double* table, std::uint32_t steps, const double r[4], const double z[4], double u,
+                            double scale) noexcept {
   const double x = std::clamp(u, 0.0, 1.0) * steps;
   const std::uint32_t k = std::min(std::uint32_t(x), steps - 1);
-  const double t = x - k, h = 1.0 / steps;
-  const double t2 = t * t, t3 = t2 * t;
-  const double* at = table + 2 * k;
-  return (2 * t3 - 3 * t2 + 1) * at[0] + (t3 - 2 * t2 + t) * h * at[1] + (-2 * t3 + 3 * t2) * at[2] +
-         (t3 - t2) * h * at[3];
+  return table[k] + scale * arcLengthBetween(r, z, double(k) / steps, std::clamp(u, 0.0, 1.0));
 }
 
 }  // namespace REVOLVE_ISA

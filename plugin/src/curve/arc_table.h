@@ -1,4 +1,4 @@
-// Each curved part's table of arc length, from which a hit's v is interpolated: built once.
+// Each curved part's table of arc length, from which a hit's v is computed: built once.
 #pragma once
 
 #include <cstdint>
@@ -7,15 +7,17 @@
 namespace revolve::detail {
 
 struct ArcTable {
-  double length;                    // the part's arc length
-  std::uint32_t steps;              // equal steps of u
-  std::vector<double> interleaved;  // arc length and its derivative |c'(u)| at u = k / steps
+  double length;                   // the part's arc length
+  std::uint32_t steps;             // equal steps of u
+  std::vector<double> cumulative;  // arc length at u = k / steps, k = 0 .. steps
 };
 
 // Arc lengths by adaptive Gauss-Legendre quadrature (halving until two levels agree within 2^-40
-// of the part's length); steps doubled from 8 (up to 1024) until cubic Hermite interpolation of
-// the table is within 2^-30 of the part's length of the arc length at every step's middle. A part
-// whose speed |c'| varies fast (a curve turning sharply) gets more steps.
+// of the part's length); steps doubled from 1 (up to 1024) until one five-point Gauss-Legendre
+// rule from a step's start (arcLengthBetween, what a hit computes: arc_length.h's arcLengthFrom)
+// is within 2^-31 of the part's length of the arc length at every eighth of the step: 2^-30 is
+// promised anywhere in it, the other half room for the points between. A smooth part needs one to
+// four steps: a few doubles a part rather than a dense table.
 ArcTable arcTableOf(const double r[4], const double z[4]);
 
 }  // namespace revolve::detail

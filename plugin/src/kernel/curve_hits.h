@@ -52,8 +52,8 @@ struct CurvePart {
   double u0, u1;        // its parameter range in that piece
   double v0, dv;        // v (normalised arc length) at its start, and its growth along it
   double length;        // its arc length
-  // Its table of v in detail::ShapeImpl::arcTable: v and dv/du at u = k / arcSteps, k = 0 .. arcSteps,
-  // interleaved, from which a hit's v is interpolated (curve/arc_length.h).
+  // Its table of v in detail::ShapeImpl::arcTable: v at u = k / arcSteps, k = 0 .. arcSteps, from
+  // which a hit's v is computed (curve/arc_length.h's arcLengthFrom).
   std::uint32_t arcOffset, arcSteps;
 };
 

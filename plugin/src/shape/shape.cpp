@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace revolve {
 namespace {
@@ -37,6 +38,20 @@ void buildSearch(detail::ShapeImpl& impl, const BuildOptions& options, std::span
     impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
   }
   if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+  // Each array at its size: the trees grow theirs level by level, and a scene of a million shapes
+  // pays for every element of slack.
+  impl.mibit.nodes.shrink_to_fit();
+  impl.mibit.intervals.shrink_to_fit();
+  impl.mibit.implicitShells.shrink_to_fit();
+  detail::WideTree& w = impl.wide;
+  w.nodes.shrink_to_fit();
+  w.leaves.shrink_to_fit();
+  w.childRef.shrink_to_fit();
+  for (std::vector<float>* v :
+       {&w.childZLow, &w.childZHigh, &w.childLow2, &w.childHigh2, &w.segmentZLow, &w.segmentZHigh, &w.segmentLow2,
+        &w.segmentHigh2, &w.runZLow, &w.runZHigh, &w.runLow2, &w.runHigh2})
+    v->shrink_to_fit();
+  impl.strips.nodes.shrink_to_fit();
 }
 
 // A part whose inner control points lie within a few roundings of its chord (2^-50 of the
@@ -147,7 +162,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.length = table.length;
     c.arcOffset = std::uint32_t(arcTable.size());
     c.arcSteps = table.steps;
-    arcTable.insert(arcTable.end(), table.interleaved.begin(), table.interleaved.end());
+    arcTable.insert(arcTable.end(), table.cumulative.begin(), table.cumulative.end());
     knots.push_back({c.r[3], c.z[3]});
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
@@ -160,9 +175,8 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     c.v0 = arc[k] / total;
     c.dv = c.length / total;
     double* entry = &arcTable[c.arcOffset];
-    for (std::uint32_t i = 0; i <= c.arcSteps; ++i)
-      entry[2 * i] = c.v0 + entry[2 * i] / total, entry[2 * i + 1] /= total;
-    entry[2 * c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
+    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[i] = c.v0 + entry[i] / total;
+    entry[c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
   }
 
   std::vector<Point2> global;
@@ -174,7 +188,9 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
   impl.arcTable = std::move(arcTable);
+  impl.arcTable.shrink_to_fit();  // grown by insertion: its slack would be a third of it
   impl.local = std::move(knots);
+  impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
   impl.segments.reserve(impl.parts.size());
   for (std::size_t k = 0; k < impl.parts.size(); ++k) {

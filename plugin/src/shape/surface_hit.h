@@ -68,7 +68,8 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
   hit.segment = k;
   if constexpr ((kAttributes & kUvAttribute) != 0) {
     hit.u = azimuthFraction(px, py);
-    const double v = hermiteAt(&shape.arcTable[part.arcOffset], part.arcSteps, u);
+    const double v =
+        arcLengthFrom(&shape.arcTable[part.arcOffset], part.arcSteps, part.r, part.z, u, part.dv / part.length);
     hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
   }
   if constexpr ((kAttributes & kNormalAttribute) == 0) return hit;
