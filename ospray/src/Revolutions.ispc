@@ -3,6 +3,7 @@
 // revolve's C++ (revolution_hits.cpp): ISPC hands it the packet, or each active lane of a hit.
 #include "common/DifferentialGeometry.ih"
 #include "common/Ray.ih"
+#include "common/RayQueryContext.ih"
 #include "geometry/Geometry.ih"
 #include "RevolutionsShared.h"
 
@@ -13,8 +14,13 @@ extern "C" void revolveOsprayShadingNormal(const void *uniform host, uniform uin
 
 // Embree hands the packet as OSPRay traced it (a varying Ray, Embree's RTCRayHitN of
 // programCount lanes): the C++ side reads and writes it through Embree's accessors.
+// A clipping query (a group's "clippingGeometry") wants every crossing handed to OSPRay's clipping
+// filter, not a hit: this geometry does not clip, so it reports none there (a hit written as an
+// ordinary one would leave the clipper's geomID in the ray, naming a model the renderer lacks).
 unmasked void Revolutions_intersect(const RTCIntersectFunctionNArguments *uniform args,
                                     const uniform bool isOcclusionTest) {
+  const RayQueryContextDefault *uniform context = (const RayQueryContextDefault *uniform)args->context;
+  if (context->type == RQCT_CLIPPING) return;
   revolveOsprayIntersect(args, isOcclusionTest ? 1 : 0);
 }
 
