@@ -65,6 +65,20 @@ extern "C" void revolveOsprayIntersect(const RTCIntersectFunctionNArguments* arg
   }
 }
 
+extern "C" bool revolveOsprayCrossing(const void* geometryUserPtr, std::uint32_t primID, const float origin[3],
+                                      const float direction[3], float tnear, float tfar, float crossing[6]) {
+  using namespace ospray::revolve_module;
+  const Revolutions& revolutions = revolutionsOf(geometryUserPtr);
+  if (primID >= revolutions.size()) return false;  // see revolveOsprayIntersect
+  const revolve::Ray query{{origin[0], origin[1], origin[2]}, {direction[0], direction[1], direction[2]}, tnear, tfar};
+  const std::optional<revolve::Hit> found = revolve::intersect(revolutions[primID].shape, query);
+  if (!found) return false;
+  crossing[0] = found->t;
+  crossing[1] = found->normal.x, crossing[2] = found->normal.y, crossing[3] = found->normal.z;
+  crossing[4] = found->u, crossing[5] = found->v;
+  return true;
+}
+
 extern "C" void revolveOsprayShadingNormal(const void* host, std::uint32_t primID, float u, float v, float normal[3]) {
   const auto& revolutions = *static_cast<const std::vector<revolve::ospray_module::Revolution>*>(host);
   // Past the end (see revolveOsprayIntersect): no hit comes from there; answer "use Ng".

@@ -1,7 +1,6 @@
 // Worlds that use a "revolution" geometry in ways other than as a plain visible object: as a
-// group's clipping geometry (which it does not support: it must clip nothing and crash nothing),
-// and re-committed with fewer profiles while a committed world still holds it. Expected answers
-// are the analytic surfaces of the cylinders involved.
+// group's clipping geometry, and re-committed with fewer profiles while a committed world still holds it. Expected
+// answers are the analytic surfaces of the cylinders involved.
 #include "ospray_session.h"
 
 #include <gtest/gtest.h>
@@ -75,8 +74,8 @@ class OsprayView : public ::testing::Test {
   OSPFrameBuffer framebuffer;
 };
 
-// An instance of a group whose clipping geometry is `geometry`, moved by `x` along the x axis.
-OSPInstance clippingInstance(OSPGeometry geometry, float x) {
+// An instance of a group whose clipping geometry is `geometry`, moved by (x, y, 0).
+OSPInstance clippingInstance(OSPGeometry geometry, float x, float y) {
   OSPGeometricModel model = ospNewGeometricModel(geometry);
   ospCommit(model);
   OSPGroup group = ospNewGroup();
@@ -84,7 +83,7 @@ OSPInstance clippingInstance(OSPGeometry geometry, float x) {
   ospSetObject(group, "clippingGeometry", models);
   ospCommit(group);
   OSPInstance instance = ospNewInstance(group);
-  const Affine moved = {1, 0, 0, 0, 1, 0, 0, 0, 1, x, 0, 0};
+  const Affine moved = {1, 0, 0, 0, 1, 0, 0, 0, 1, x, y, 0};
   ospSetParam(instance, "transform", OSP_AFFINE3F, moved.data());
   ospCommit(instance);
   ospRelease(models);
@@ -94,24 +93,37 @@ OSPInstance clippingInstance(OSPGeometry geometry, float x) {
 }
 
 // A revolution as clipping geometry once made the renderer index the clipping group's (empty)
-// models and crash. It clips nothing (docs/ospray.md): rays pass it, beside the can and across it.
-TEST_F(OsprayView, ARevolutionAsClippingGeometryClipsNothing) {
+// models and crash. It clips as OSPRay's own geometries do: the can's surface inside the clipper (a
+// closed cylinder of radius 0.5 about the line x = 0, y = -1) is gone, so the ray through x = 0
+// meets the can's back wall at y = +1; through x = 0.8, the can's front at y = -0.6 lies outside the
+// clipper (0.89 from its axis) and stays. A clipper beside the can (x = 2) clips nothing.
+TEST_F(OsprayView, ARevolutionAsClippingGeometryClips) {
   OSPGeometry can = newRevolutions({kCan});
+  OSPGeometry clipper = newRevolutions({{{0.0f, -1.0f}, {0.5f, -1.0f}, {0.5f, 3.0f}, {0.0f, 3.0f}}});
   OSPGeometricModel model = ospNewGeometricModel(can);
   ospCommit(model);
-  for (const float clipperX : {2.0f, 0.5f}) {  // beside the can, then overlapping it
-    const std::vector<OSPInstance> instances = {newInstance(model, kIdentity), clippingInstance(can, clipperX)};
+  struct Case {
+    float clipperX, clipperY;
+    float frontY;  // the y picked through x = 0, z = 1
+  };
+  for (const Case c : {Case{2.0f, 0.0f, -1.0f}, Case{0.0f, -1.0f, 1.0f}}) {
+    const std::vector<OSPInstance> instances = {newInstance(model, kIdentity),
+                                                clippingInstance(clipper, c.clipperX, c.clipperY)};
     OSPWorld world = worldOf(instances);
     ospRenderFrameBlocking(framebuffer, renderer, camera, world);
-    EXPECT_FALSE(pickAt(world, 2.0f, 1.0f)) << "clipper at x = " << clipperX << ": nothing visible at x = 2";
-    const std::optional<Picked> front = pickAt(world, 0.0f, 1.0f);
-    ASSERT_TRUE(front) << "clipper at x = " << clipperX;
-    EXPECT_NEAR(front->position[1], -1.0f, 1e-5f) << "the can's front (y = -r), unclipped";
+    EXPECT_FALSE(pickAt(world, 2.0f, 1.0f)) << "clipper at x = " << c.clipperX << ": nothing visible at x = 2";
+    const std::optional<Picked> middle = pickAt(world, 0.0f, 1.0f);
+    ASSERT_TRUE(middle) << "clipper at x = " << c.clipperX;
+    EXPECT_NEAR(middle->position[1], c.frontY, 1e-5f) << "clipper at (" << c.clipperX << ", " << c.clipperY << ")";
+    const std::optional<Picked> side = pickAt(world, 0.8f, 1.0f);
+    ASSERT_TRUE(side);
+    EXPECT_NEAR(side->position[1], -0.6f, 1e-5f) << "-sqrt(1 - 0.8^2): the can's front, unclipped";
     EXPECT_TRUE(session.takeErrors().empty());
     ospRelease(world);
     for (OSPInstance instance : instances) ospRelease(instance);
   }
   ospRelease(model);
+  ospRelease(clipper);
   ospRelease(can);
 }
 
