@@ -80,6 +80,14 @@ TEST_F(OsprayErrors, UnknownSplineKind) {
   ospRelease(geometry);
 }
 
+// What OSPRay 3.2's ospSetString hands the device (a pointer's bytes) is shown escaped, not raw.
+TEST_F(OsprayErrors, SplineOfUnprintableBytes) {
+  OSPGeometry geometry = withProfile(kCup);
+  ospSetParam(geometry, "spline", OSP_STRING, "q\x01\xff\"\\");
+  expectError(geometry, {"revolution: 'spline' is \"q\\x01\\xff\\\"\\\\\": it must be one of"});
+  ospRelease(geometry);
+}
+
 TEST_F(OsprayErrors, ToleranceNotAPositiveNumber) {
   OSPGeometry geometry = withProfile(kCup);
   ospSetParam(geometry, "spline", OSP_STRING, "catmull-rom");
