@@ -30,8 +30,12 @@ struct Options {
   int frames = 1;                      // frames rendered; the median time is reported
 };
 
+// Every error OSPRay reports counts: an image of a scene OSPRay refused part of is no answer.
+int osprayErrors = 0;
+
 void onError(void*, OSPError code, const char* message) {
   std::fprintf(stderr, "revolve-ospray-scene: OSPRay error %d: %s\n", int(code), message);
+  ++osprayErrors;
 }
 
 int run(const Options& options) {
@@ -103,6 +107,9 @@ int run(const Options& options) {
     ospRelease(renderer);
   }
   ospShutdown();
+  if (osprayErrors > 0) {
+    throw std::runtime_error("OSPRay reported " + std::to_string(osprayErrors) + " error(s) (above): no image written");
+  }
   render::writeImage(outputs.stream(options.output), options.output, image);
   outputs.commit();
   std::printf("%s: %dx%d, %d samples a pixel, OSPRay %s, %.3f s a frame (median of %d)\n", options.output.c_str(),

@@ -105,8 +105,13 @@ OsprayScene::OsprayScene(const io::SceneDescription& scene, int width, int heigh
       ospSetParam(geometry, "spline", OSP_STRING, spline);  // not ospSetString: OSPRay 3.2's passes &s
     ospCommit(geometry);
     revolutions.push_back(OSPGeometry(keep(geometry)));
-    // The same shape the module builds (a spline traced exactly, or the polyline), for its size.
+    // The same shape the module builds (a spline traced exactly, or the polyline), for its size;
+    // for a curve traced as its polyline, also the curve's normals and the segments' starts it keeps.
     geometryBytes_ += p.spline ? Shape(*p.spline).memoryBytes() : Shape(p.profile).memoryBytes();
+    if (!p.spline && p.curve && p.curve->kind() != SplineKind::linear) {
+      const ShadingNormals normals(p.profile, *p.curve);
+      geometryBytes_ += normals.memoryBytes() + normals.segmentCount() * sizeof(float);
+    }
   }
 
   const auto addInstance = [&](OSPGeometry geometry, std::size_t material, const float* affine) {

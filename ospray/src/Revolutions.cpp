@@ -3,6 +3,7 @@
 #include "Revolutions_ispc.h"
 #include "revolution_hits.h"
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -30,7 +31,33 @@ Revolutions::Revolutions(api::ISPCDevice& device) : AddStructShared(device.getDR
   getSh()->super.intersect = ispc::Revolutions_intersect_addr();
 }
 
+// OSPRay's getParam answers "not given" for a parameter of another type, and ignores names it was
+// not asked for: a misspelt or wrongly typed parameter would silently change what is traced.
+void Revolutions::refuseUnknownOrMistypedParameters() {
+  for (auto param = params_begin(); param != params_end(); ++param) {
+    const std::string& name = (*param)->name;
+    const rkcommon::utility::Any& value = (*param)->data;
+    if (name == "profile") {  // an object here; its element type is checked where it is read
+      if (!value.is<ManagedObject*>()) {
+        throw std::invalid_argument("'profile' is not a data array (set it with ospSetObject)");
+      }
+    } else if (name == "spline") {
+      if (!value.is<std::string>()) {
+        throw std::invalid_argument("'spline' is not a string (set it with OSP_STRING)");
+      }
+    } else if (name == "tolerance") {
+      if (!value.is<float>()) {
+        throw std::invalid_argument("'tolerance' is not a float (set it with OSP_FLOAT, e.g. ospSetFloat)");
+      }
+    } else {
+      throw std::invalid_argument("unknown parameter '" + name +
+                                  "': the parameters are 'profile', 'spline' and 'tolerance'");
+    }
+  }
+}
+
 RevolutionParameters Revolutions::readParameters() {
+  refuseUnknownOrMistypedParameters();
   RevolutionParameters parameters;
   Data* profile = getParamObject<Data>("profile");
   if (profile != nullptr && profile->is<vec2f, 1>()) {
@@ -39,15 +66,15 @@ RevolutionParameters Revolutions::readParameters() {
     std::size_t index = 0;
     for (Data* one : profile->as<Data*, 1>()) {
       if (one == nullptr || !one->is<vec2f, 1>()) {
-        throw std::runtime_error("revolution: 'profile' " + std::to_string(index) +
-                                 " is not a 1D array of OSP_VEC2F (r, z) points");
+        throw std::invalid_argument("'profile' " + std::to_string(index) +
+                                    " is not a 1D array of OSP_VEC2F (r, z) points");
       }
       parameters.profiles.push_back(pointsOf(one->as<vec2f, 1>()));
       ++index;
     }
   } else if (profile != nullptr) {
-    throw std::runtime_error("revolution: 'profile' has element type " + stringFor(profile->type) +
-                             ": it must be a 1D array of OSP_VEC2F (r, z) points, or a 1D array of such arrays");
+    throw std::invalid_argument("'profile' has element type " + stringFor(profile->type) +
+                                ": it must be a 1D array of OSP_VEC2F (r, z) points, or a 1D array of such arrays");
   }
   // OSPRay keeps a string parameter as a std::string; empty: not given.
   if (const std::string spline = getParam<std::string>("spline", ""); !spline.empty()) parameters.spline = spline;
@@ -59,8 +86,9 @@ void Revolutions::commit() {
   std::vector<revolve::ospray_module::Revolution> built;
   try {
     built = revolve::ospray_module::buildRevolutions(readParameters());
-  } catch (const std::invalid_argument& error) {
-    // Keep a valid (possibly empty) Embree geometry, so that a world holding this one still works.
+  } catch (const std::exception& error) {
+    // Any refusal (a bad point or a wrongly typed parameter): keep a valid (possibly empty) Embree
+    // geometry, so that a group holding this one keeps its other models' Embree geometry IDs.
     if (embreeGeometry == nullptr) {
       getSh()->host = &revolutions_;
       createEmbreeUserGeometry(&revolutionBounds);

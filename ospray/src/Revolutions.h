@@ -26,6 +26,7 @@ struct Revolutions : public AddStructShared<Geometry, ispc::Revolutions> {
   size_t numPrimitives() const override { return revolutions_.size(); }
 
  private:
+  void refuseUnknownOrMistypedParameters();
   revolve::ospray_module::RevolutionParameters readParameters();
   std::vector<revolve::ospray_module::Revolution> revolutions_;
 };

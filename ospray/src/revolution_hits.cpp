@@ -32,7 +32,11 @@ void revolutionBounds(const RTCBoundsFunctionArguments* args) {
 // Ray.ih keeps that layout). Under an instance Embree hands the object-space ray.
 extern "C" void revolveOsprayIntersect(const RTCIntersectFunctionNArguments* args, std::int32_t occlusion) {
   using namespace ospray::revolve_module;
-  const revolve::Shape& shape = revolutionsOf(args->geometryUserPtr)[args->primID].shape;
+  // A geometry re-committed with fewer revolutions, under a group not re-committed: Embree still
+  // has the old primitives' bounds. One no longer there is missed.
+  const Revolutions& revolutions = revolutionsOf(args->geometryUserPtr);
+  if (args->primID >= revolutions.size()) return;
+  const revolve::Shape& shape = revolutions[args->primID].shape;
   const unsigned n = args->N;
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, n);
   RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, n);
@@ -61,9 +65,25 @@ extern "C" void revolveOsprayIntersect(const RTCIntersectFunctionNArguments* arg
   }
 }
 
+extern "C" bool revolveOsprayCrossing(const void* geometryUserPtr, std::uint32_t primID, const float origin[3],
+                                      const float direction[3], float tnear, float tfar, float crossing[6]) {
+  using namespace ospray::revolve_module;
+  const Revolutions& revolutions = revolutionsOf(geometryUserPtr);
+  if (primID >= revolutions.size()) return false;  // see revolveOsprayIntersect
+  const revolve::Ray query{{origin[0], origin[1], origin[2]}, {direction[0], direction[1], direction[2]}, tnear, tfar};
+  const std::optional<revolve::Hit> found = revolve::intersect(revolutions[primID].shape, query);
+  if (!found) return false;
+  crossing[0] = found->t;
+  crossing[1] = found->normal.x, crossing[2] = found->normal.y, crossing[3] = found->normal.z;
+  crossing[4] = found->u, crossing[5] = found->v;
+  return true;
+}
+
 extern "C" void revolveOsprayShadingNormal(const void* host, std::uint32_t primID, float u, float v, float normal[3]) {
   const auto& revolutions = *static_cast<const std::vector<revolve::ospray_module::Revolution>*>(host);
-  const std::optional<revolve::Vec3> shading = revolutions[primID].shadingNormal(u, v);
+  // Past the end (see revolveOsprayIntersect): no hit comes from there; answer "use Ng".
+  const std::optional<revolve::Vec3> shading =
+      primID < revolutions.size() ? revolutions[primID].shadingNormal(u, v) : std::nullopt;
   normal[0] = shading ? shading->x : 0.0f;
   normal[1] = shading ? shading->y : 0.0f;
   normal[2] = shading ? shading->z : 0.0f;

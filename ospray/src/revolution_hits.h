@@ -15,5 +15,8 @@ void revolutionBounds(const RTCBoundsFunctionArguments* args);
 
 extern "C" {
 void revolveOsprayIntersect(const RTCIntersectFunctionNArguments* args, std::int32_t occlusion);
+// The ray's nearest crossing with revolution primID in [tnear, tfar]: (t, Ng, u, v), or false.
+bool revolveOsprayCrossing(const void* geometryUserPtr, std::uint32_t primID, const float origin[3],
+                           const float direction[3], float tnear, float tfar, float crossing[6]);
 void revolveOsprayShadingNormal(const void* host, std::uint32_t primID, float u, float v, float normal[3]);
 }

@@ -20,6 +20,27 @@ std::string splineKindsList() {
   return names;
 }
 
+// The text as a message can show it: printable ASCII as is, a backslash and a double quote escaped,
+// any other byte as \xNN (a string set through ospSetString's pointer mix-up is raw bytes).
+std::string printable(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string shown;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\\' || c == '"') {
+      shown += '\\';
+      shown += c;
+    } else if (byte >= 0x20 && byte < 0x7f) {
+      shown += c;
+    } else {
+      shown += "\\x";
+      shown += kHex[byte >> 4];
+      shown += kHex[byte & 0xf];
+    }
+  }
+  return shown;
+}
+
 // The shortest text that reads back as the same float: the value as the caller set it.
 std::string formatNumber(float value) {
   char text[32];
@@ -37,7 +58,8 @@ std::optional<SplineKind> checkedSplineKind(const RevolutionParameters& paramete
   }
   const std::optional<SplineKind> kind = splineKindNamed(*parameters.spline);
   if (!kind) {
-    throw std::invalid_argument("'spline' is \"" + *parameters.spline + "\": it must be one of " + splineKindsList());
+    throw std::invalid_argument("'spline' is \"" + printable(*parameters.spline) + "\": it must be one of " +
+                                splineKindsList());
   }
   if (parameters.tolerance && !Profile::toleranceAllowed(*parameters.tolerance)) {
     throw std::invalid_argument("'tolerance' is " + formatNumber(*parameters.tolerance) + ": " +

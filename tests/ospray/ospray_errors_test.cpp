@@ -80,12 +80,49 @@ TEST_F(OsprayErrors, UnknownSplineKind) {
   ospRelease(geometry);
 }
 
+// What OSPRay 3.2's ospSetString hands the device (a pointer's bytes) is shown escaped, not raw.
+TEST_F(OsprayErrors, SplineOfUnprintableBytes) {
+  OSPGeometry geometry = withProfile(kCup);
+  ospSetParam(geometry, "spline", OSP_STRING, "q\x01\xff\"\\");
+  expectError(geometry, {"revolution: 'spline' is \"q\\x01\\xff\\\"\\\\\": it must be one of"});
+  ospRelease(geometry);
+}
+
 TEST_F(OsprayErrors, ToleranceNotAPositiveNumber) {
   OSPGeometry geometry = withProfile(kCup);
   ospSetParam(geometry, "spline", OSP_STRING, "catmull-rom");
   ospSetFloat(geometry, "tolerance", -0.01f);
   expectError(geometry, {"revolution: 'tolerance' is -0.01: ", "finite number > 0"});
   ospRelease(geometry);
+}
+
+// OSPRay's getParam would answer "not given" for these, so the geometry would trace something
+// else than asked without a word.
+TEST_F(OsprayErrors, ToleranceOfAnotherType) {
+  OSPGeometry geometry = withProfile(kCup);
+  ospSetParam(geometry, "spline", OSP_STRING, "quadratic");
+  const double tolerance = 0.01;
+  ospSetParam(geometry, "tolerance", OSP_DOUBLE, &tolerance);
+  expectError(geometry, {"revolution: 'tolerance' is not a float", "OSP_FLOAT"});
+  ospSetInt(geometry, "tolerance", 1);
+  expectError(geometry, {"revolution: 'tolerance' is not a float"});
+  ospRelease(geometry);
+}
+
+TEST_F(OsprayErrors, SplineNotAString) {
+  OSPGeometry geometry = withProfile(kCup);
+  ospSetInt(geometry, "spline", 2);
+  expectError(geometry, {"revolution: 'spline' is not a string", "OSP_STRING"});
+  ospRelease(geometry);
+}
+
+TEST_F(OsprayErrors, UnknownParameters) {
+  for (const char* misspelt : {"profiles", "splin", "Tolerance"}) {
+    OSPGeometry geometry = withProfile(kCup);
+    ospSetParam(geometry, misspelt, OSP_STRING, "quadratic");
+    expectError(geometry, {std::string("revolution: unknown parameter '") + misspelt + "'", "'profile', 'spline'"});
+    ospRelease(geometry);
+  }
 }
 
 TEST_F(OsprayErrors, OneBadProfileAmongMany) {
@@ -150,6 +187,60 @@ TEST_F(OsprayErrors, OsprayKeepsRunning) {
   for (OSPGeometricModel model : models) ospRelease(model);
   ospRelease(refused);
   ospRelease(good);
+}
+
+// A refused first commit still gives the geometry an (empty) Embree geometry: in one group with a
+// good one, Embree's geometry IDs stay those OSPRay gave the models, so a pick names the right one.
+// A profile of the wrong type once left none, and the pick named the refused model.
+TEST_F(OsprayErrors, ARefusedGeometryInTheSameGroupAsAGoodOne) {
+  for (const bool wrongType : {false, true}) {
+    OSPGeometry refused = ospNewGeometry("revolution");
+    if (wrongType) {
+      const std::array<float, 6> points = {0, 0, 0, 1, 1, 1};
+      OSPData data = ownedData(points.data(), OSP_VEC3F, 2);
+      ospSetObject(refused, "profile", data);
+      ospRelease(data);
+    }
+    ospCommit(refused);
+    ASSERT_EQ(session.takeErrors().size(), 1u);
+    OSPGeometry good = newRevolutions({kCup});
+    std::array<OSPGeometricModel, 2> models = {ospNewGeometricModel(refused), ospNewGeometricModel(good)};
+    for (OSPGeometricModel model : models) ospCommit(model);
+    OSPGroup group = ospNewGroup();
+    OSPData modelData = ownedData(models.data(), OSP_GEOMETRIC_MODEL, models.size());
+    ospSetObject(group, "geometry", modelData);
+    ospCommit(group);
+    OSPInstance instance = ospNewInstance(group);
+    ospCommit(instance);
+    OSPWorld world = ospNewWorld();
+    OSPData instanceData = ownedData(&instance, OSP_INSTANCE, 1);
+    ospSetObject(world, "instance", instanceData);
+    ospCommit(world);
+    OSPCamera camera = ospNewCamera("perspective");
+    const std::array<float, 3> position = {0.0f, -6.0f, 0.75f}, direction = {0.0f, 1.0f, 0.0f}, up = {0, 0, 1};
+    ospSetParam(camera, "position", OSP_VEC3F, position.data());
+    ospSetParam(camera, "direction", OSP_VEC3F, direction.data());
+    ospSetParam(camera, "up", OSP_VEC3F, up.data());
+    ospCommit(camera);
+    OSPRenderer renderer = ospNewRenderer("scivis");
+    ospCommit(renderer);
+    OSPFrameBuffer framebuffer = ospNewFrameBuffer(16, 16, OSP_FB_RGBA8, OSP_FB_COLOR);
+    ospCommit(framebuffer);
+    OSPPickResult pick;
+    ospPick(&pick, framebuffer, renderer, camera, world, 0.5f, 0.5f);
+    ASSERT_TRUE(pick.hasHit) << (wrongType ? "wrongly typed profile" : "no profile");
+    EXPECT_EQ(pick.model, models[1]) << (wrongType ? "wrongly typed profile" : "no profile");
+    EXPECT_NEAR(std::hypot(pick.worldPosition[0], pick.worldPosition[1]), 1.1f, 1e-5f);  // r at z = 0.75
+    ospRelease(pick.instance);
+    ospRelease(pick.model);
+    EXPECT_TRUE(session.takeErrors().empty());
+
+    for (OSPObject object : {OSPObject(framebuffer), OSPObject(renderer), OSPObject(camera), OSPObject(instanceData),
+                             OSPObject(world), OSPObject(instance), OSPObject(modelData), OSPObject(group),
+                             OSPObject(models[0]), OSPObject(models[1]), OSPObject(refused), OSPObject(good)}) {
+      ospRelease(object);
+    }
+  }
 }
 
 }  // namespace

@@ -27,7 +27,11 @@ for project in "$here/consumer_core" "$here/consumer_embree$major" "$@"; do
   echo "== $name: $program"
   "$program"
 done
-if compgen -G "$scratch/prefix/lib*/libospray_module_revolve.so.*" >/dev/null; then
+# Whether the module was installed, as the package itself says (revolve_OSPRAY_MODULE): its folder
+# is the install's libdir, lib/x86_64-linux-gnu on Debian, not always lib.
+config=$(find "$scratch/prefix" -name revolveConfig.cmake | head -n 1)
+module=$(sed -n 's/^set(revolve_OSPRAY_MODULE \(.*\))$/\1/p' "$config")
+if [[ "${module^^}" =~ ^(ON|TRUE|1|YES)$ ]]; then
   cmake -S "$here/consumer_ospray" -B "$scratch/consumer_ospray" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" >/dev/null
   cmake --build "$scratch/consumer_ospray" >/dev/null
   echo "== consumer_ospray: LD_LIBRARY_PATH=$(cat "$scratch/consumer_ospray/module_dir.txt")"
