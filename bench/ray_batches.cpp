@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace revolve::bench {
 namespace {
@@ -14,13 +15,17 @@ constexpr std::size_t kThreadedBatchRays = 16384;  // enough work to spread over
 
 }  // namespace
 
-std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays) {
-  if (rays.size() % 8 != 0) throw std::invalid_argument("packetsOf: the ray count must be a multiple of 8");
-  auto packets = std::make_shared<std::vector<RTCRayHit8>>(rays.size() / 8);
+namespace {
+
+template <class Packet, std::size_t kWidth>
+std::shared_ptr<const std::vector<Packet>> packetsOfWidth(const std::vector<Ray>& rays) {
+  if (rays.size() % kWidth != 0)
+    throw std::invalid_argument("packetsOf: the ray count must be a multiple of " + std::to_string(kWidth));
+  auto packets = std::make_shared<std::vector<Packet>>(rays.size() / kWidth);
   for (std::size_t p = 0; p < packets->size(); ++p) {
-    RTCRayHit8& packet = (*packets)[p];
-    for (int i = 0; i < 8; ++i) {
-      const Ray& ray = rays[8 * p + i];
+    Packet& packet = (*packets)[p];
+    for (std::size_t i = 0; i < kWidth; ++i) {
+      const Ray& ray = rays[kWidth * p + i];
       packet.ray.org_x[i] = ray.origin.x;
       packet.ray.org_y[i] = ray.origin.y;
       packet.ray.org_z[i] = ray.origin.z;
@@ -37,6 +42,16 @@ std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>&
     }
   }
   return packets;
+}
+
+}  // namespace
+
+std::shared_ptr<const std::vector<RTCRayHit8>> packetsOf(const std::vector<Ray>& rays) {
+  return packetsOfWidth<RTCRayHit8, 8>(rays);
+}
+
+std::shared_ptr<const std::vector<RTCRayHit16>> packets16Of(const std::vector<Ray>& rays) {
+  return packetsOfWidth<RTCRayHit16, 16>(rays);
 }
 
 std::function<std::size_t()> singleRayBatch(RTCScene scene, const std::vector<Ray>& rays) {
@@ -57,6 +72,19 @@ std::function<std::size_t()> packetBatch(RTCScene scene, std::shared_ptr<const s
     alignas(32) const int valid[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     for (std::size_t i = 0; i < kBatchRays / 8; ++i) {
       RTCRayHit8 packet = (*packets)[cursor];
+      query.intersect(valid, scene, packet);
+      if (++cursor == packets->size()) cursor = 0;
+    }
+    return kBatchRays;
+  };
+}
+
+std::function<std::size_t()> packet16Batch(RTCScene scene, std::shared_ptr<const std::vector<RTCRayHit16>> packets) {
+  return [scene, packets, cursor = std::size_t{0}]() mutable {
+    embree::RayQuery query;
+    alignas(64) const int valid[16] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+    for (std::size_t i = 0; i < kBatchRays / 16; ++i) {
+      alignas(64) RTCRayHit16 packet = (*packets)[cursor];
       query.intersect(valid, scene, packet);
       if (++cursor == packets->size()) cursor = 0;
     }

@@ -25,6 +25,7 @@
 #include "cli/command_line.h"
 #include "embree/embree_handles.h"
 #include "embree/memory_check.h"
+#include "shape/query_kernels.h"
 
 #include <CLI/CLI.hpp>
 
@@ -53,6 +54,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0001, 100.0));
   cli.add_option("--seed", settings.seed, "seed of the incoherent rays")
       ->check(app::wholeNumberIn<std::uint64_t>(0, UINT64_MAX));
+  std::string isa;
+  cli.add_option("--isa", isa,
+                 "the instruction set of revolve's per-ray code and of Embree's kernels alike (Embree's "
+                 "device config isa=...): sse2, avx2 or avx512 (default: the best this CPU runs, for each)")
+      ->check(CLI::IsMember({"sse2", "avx2", "avx512"}));
   CLI::App* speedError = cli.add_subcommand("speed-error", "every method on the test shapes: speed, error, memory");
   speedError->add_option("--shapes", shapes, "only these shapes (sphere, torus, vase, goblet, bottle)")
       ->check(CLI::IsMember({"sphere", "torus", "vase", "goblet", "bottle"}));
@@ -225,7 +231,19 @@ int main(int argc, char** argv) {
       writeDocument(document);
       return;
     }
-    const revolve::app::Device device = revolve::app::newDevice();
+    std::string deviceConfig;
+    if (!isa.empty()) {
+      namespace detail = revolve::detail;
+      const detail::Isa chosen = isa == "sse2"   ? detail::Isa::sse2
+                                 : isa == "avx2" ? detail::Isa::avx2
+                                                 : detail::Isa::avx512;
+      if (!detail::cpuRuns(chosen)) throw std::runtime_error("--isa " + isa + ": this CPU does not run it");
+      detail::limitIsa(chosen);
+      deviceConfig = "isa=" + isa;
+    }
+    std::printf("instruction sets: revolve %s, Embree %s\n", revolve::detail::isaName(revolve::detail::chosenIsa()),
+                deviceConfig.empty() ? "its default (the best it was built for)" : deviceConfig.c_str());
+    const revolve::app::Device device = revolve::app::newDevice(deviceConfig.empty() ? nullptr : deviceConfig.c_str());
     RunResults results;
     results.settings = settings;
     const bool all = cli.get_subcommands().empty();

@@ -1,6 +1,7 @@
 #include "run_info.h"
 
 #include "io/text_files.h"
+#include "shape/query_kernels.h"
 
 #include <revolve/embree_api.h>
 
@@ -40,6 +41,7 @@ nlohmann::ordered_json runInfo(const std::string& commandLine) {
   info["machine"] = {
       {"cpu", cpuModel()}, {"threads", std::thread::hardware_concurrency()}, {"load_before", loadAverage()}};
   info["embree"] = RTC_VERSION_STRING;
+  info["revolve_isa"] = detail::isaName(detail::chosenIsa());  // revolve-bench --isa, else the best
   return info;
 }
 

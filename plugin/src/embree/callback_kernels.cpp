@@ -6,10 +6,18 @@ namespace revolve::detail {
 
 extern const CallbackKernels callbackKernelsSse2;
 extern const CallbackKernels callbackKernelsAvx2;
+extern const CallbackKernels callbackKernelsAvx512;
 
 const CallbackKernels& callbackKernels() noexcept {
-  static const CallbackKernels& best = cpuRunsAvx2() ? callbackKernelsAvx2 : callbackKernelsSse2;
-  return best;
+  switch (chosenIsa()) {
+    case Isa::sse2:
+      break;
+    case Isa::avx2:
+      return callbackKernelsAvx2;
+    case Isa::avx512:
+      return callbackKernelsAvx512;
+  }
+  return callbackKernelsSse2;
 }
 
 }  // namespace revolve::detail

@@ -14,7 +14,7 @@ struct CallbackKernels {
   RTCOccludedFunctionN occluded[2];
 };
 
-// The callbacks for the best instruction set this CPU supports, chosen once.
+// The callbacks for chosenIsa() (shape/query_kernels.h): the best instruction set this CPU runs.
 const CallbackKernels& callbackKernels() noexcept;
 
 }  // namespace revolve::detail

@@ -1,5 +1,5 @@
 // The callbacks of one instruction set: include once, from that set's translation unit
-// (callback_kernels_sse2.cpp, callback_kernels_avx2.cpp), which defines its table from them.
+// (callback_kernels_sse2.cpp, _avx2.cpp, _avx512.cpp), which defines its table from them.
 #pragma once
 
 #include "embree/callback_kernels.h"

@@ -18,12 +18,21 @@ struct QueryKernels {
                                    float t) noexcept;
 };
 
-enum class Isa { sse2, avx2 };
+// The instruction sets the per-ray code is compiled for, each including the ones before it.
+enum class Isa { sse2, avx2, avx512 };
+inline constexpr Isa kIsas[] = {Isa::sse2, Isa::avx2, Isa::avx512};
+const char* isaName(Isa isa) noexcept;
 
-// Whether this CPU runs the AVX2 copies (x86-64-v3 as they are compiled for it).
-bool cpuRunsAvx2() noexcept;
+// Whether this CPU runs the copy for `isa` (x86-64-v3, x86-64-v4 as the copies are compiled for them).
+bool cpuRuns(Isa isa) noexcept;
+// The instruction set whose copies queries and new Embree geometries use: the best this CPU runs,
+// or at most the one a benchmark set with limitIsa.
+Isa chosenIsa() noexcept;
+// For benchmarks comparing instruction sets in one process: later choices take at most `isa`.
+// Geometries already made keep their callbacks.
+void limitIsa(Isa isa) noexcept;
 
-// The kernels for the best instruction set this CPU supports, chosen once.
+// The kernels for chosenIsa().
 const QueryKernels& queryKernels() noexcept;
 // The kernels for `isa`, or nullptr if this CPU cannot run them (for tests comparing the copies).
 const QueryKernels* queryKernelsFor(Isa isa) noexcept;

@@ -1,5 +1,5 @@
 // The per-ray entry points of one instruction set: include once, from that set's translation unit
-// (query_kernels_sse2.cpp, query_kernels_avx2.cpp), which defines its QueryKernels table from them.
+// (query_kernels_sse2.cpp, _avx2.cpp, _avx512.cpp), which defines its QueryKernels table from them.
 #pragma once
 
 #include "shape/query_kernels.h"

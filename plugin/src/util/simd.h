@@ -23,10 +23,18 @@ using NativeDouble = __m128d;
 struct Lanes {
   NativeDouble v;
 };
+#if defined(__AVX512VL__)
+// A comparison's result: bit i set where it holds in lane i, in a mask register (AVX-512 compares
+// write one, and turning it into a vector and back costs two instructions a comparison).
+struct LaneMask {
+  __mmask8 m;
+};
+#else
 // A comparison's result: all bits set in the lanes where it holds.
 struct LaneMask {
   NativeDouble v;
 };
+#endif
 
 [[gnu::always_inline]] inline Lanes load(const double* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
 #if defined(__AVX2__)
@@ -53,14 +61,37 @@ struct LaneMask {
 // min and max as minsd / maxsd compute them; no operand here is ever NaN.
 [[gnu::always_inline]] inline Lanes min(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(min)(a.v, b.v)}; }
 [[gnu::always_inline]] inline Lanes max(Lanes a, Lanes b) noexcept { return {REVOLVE_SIMD(max)(a.v, b.v)}; }
+#if defined(__AVX512VL__)
+[[gnu::always_inline]] inline LaneMask operator&(LaneMask a, LaneMask b) noexcept { return {__mmask8(a.m & b.m)}; }
+[[gnu::always_inline]] inline LaneMask operator|(LaneMask a, LaneMask b) noexcept { return {__mmask8(a.m | b.m)}; }
+[[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)};
+}
+[[gnu::always_inline]] inline LaneMask operator<=(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)};
+}
+[[gnu::always_inline]] inline LaneMask operator==(Lanes a, Lanes b) noexcept {
+  return {_mm256_cmp_pd_mask(a.v, b.v, _CMP_EQ_OQ)};
+}
+[[gnu::always_inline]] inline Lanes select(LaneMask m, Lanes ifSet, Lanes otherwise) noexcept {
+  return {_mm256_mask_blend_pd(m.m, otherwise.v, ifSet.v)};
+}
+// The lanes of `a` where the mask holds, +0 elsewhere.
+[[gnu::always_inline]] inline Lanes onlyWhere(LaneMask m, Lanes a) noexcept { return {_mm256_maskz_mov_pd(m.m, a.v)}; }
+// Bit i set when lane i holds.
+[[gnu::always_inline]] inline unsigned bits(LaneMask m) noexcept { return m.m; }
+#else
 [[gnu::always_inline]] inline LaneMask operator&(LaneMask a, LaneMask b) noexcept {
   return {REVOLVE_SIMD(and)(a.v, b.v)};
 }
 [[gnu::always_inline]] inline LaneMask operator|(LaneMask a, LaneMask b) noexcept {
   return {REVOLVE_SIMD(or)(a.v, b.v)};
 }
+#endif
 
-#if defined(__AVX2__)
+#if defined(__AVX512VL__)
+// The comparisons and selections are above.
+#elif defined(__AVX2__)
 [[gnu::always_inline]] inline LaneMask operator<(Lanes a, Lanes b) noexcept {
   return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)};
 }
@@ -82,8 +113,10 @@ struct LaneMask {
   return {_mm_or_pd(_mm_and_pd(m.v, ifSet.v), _mm_andnot_pd(m.v, otherwise.v))};
 }
 #endif
+#if !defined(__AVX512VL__)
 // The lanes of `a` where the mask holds, +0 elsewhere.
 [[gnu::always_inline]] inline Lanes onlyWhere(LaneMask m, Lanes a) noexcept { return {REVOLVE_SIMD(and)(m.v, a.v)}; }
+#endif
 // The lanes rounded to float, as static_cast<float> rounds each.
 #if defined(__AVX2__)
 [[gnu::always_inline]] inline void storeFloats(float* p, Lanes a) noexcept { _mm_storeu_ps(p, _mm256_cvtpd_ps(a.v)); }
@@ -96,8 +129,10 @@ struct LaneMask {
 // is less, which decides the sign of a zero result): the vector instructions return the second.
 [[gnu::always_inline]] inline Lanes maxOf(Lanes a, Lanes b) noexcept { return select(a < b, b, a); }
 [[gnu::always_inline]] inline Lanes minOf(Lanes a, Lanes b) noexcept { return select(b < a, b, a); }
+#if !defined(__AVX512VL__)
 // Bit i set when lane i holds.
 [[gnu::always_inline]] inline unsigned bits(LaneMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
+#endif
 
 #undef REVOLVE_SIMD
 
@@ -115,9 +150,15 @@ using NativeFloat = __m128;
 struct FloatLanes {
   NativeFloat v;
 };
+#if defined(__AVX512VL__)
+struct FloatMask {
+  __mmask8 m;
+};
+#else
 struct FloatMask {
   NativeFloat v;
 };
+#endif
 
 [[gnu::always_inline]] inline FloatLanes load(const float* p) noexcept { return {REVOLVE_SIMD(loadu)(p)}; }
 [[gnu::always_inline]] inline void store(float* p, FloatLanes a) noexcept { REVOLVE_SIMD(storeu)(p, a.v); }
@@ -137,6 +178,17 @@ struct FloatMask {
 [[gnu::always_inline]] inline FloatLanes max(FloatLanes a, FloatLanes b) noexcept {
   return {REVOLVE_SIMD(max)(a.v, b.v)};
 }
+#if defined(__AVX512VL__)
+[[gnu::always_inline]] inline FloatMask operator&(FloatMask a, FloatMask b) noexcept { return {__mmask8(a.m & b.m)}; }
+[[gnu::always_inline]] inline FloatMask operator|(FloatMask a, FloatMask b) noexcept { return {__mmask8(a.m | b.m)}; }
+[[gnu::always_inline]] inline FloatMask operator<(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm256_cmp_ps_mask(a.v, b.v, _CMP_LT_OQ)};
+}
+[[gnu::always_inline]] inline FloatMask operator<=(FloatLanes a, FloatLanes b) noexcept {
+  return {_mm256_cmp_ps_mask(a.v, b.v, _CMP_LE_OQ)};
+}
+[[gnu::always_inline]] inline unsigned bits(FloatMask m) noexcept { return m.m; }
+#else
 [[gnu::always_inline]] inline FloatMask operator&(FloatMask a, FloatMask b) noexcept {
   return {REVOLVE_SIMD(and)(a.v, b.v)};
 }
@@ -159,6 +211,7 @@ struct FloatMask {
 }
 #endif
 [[gnu::always_inline]] inline unsigned bits(FloatMask m) noexcept { return unsigned(REVOLVE_SIMD(movemask)(m.v)); }
+#endif
 #undef REVOLVE_SIMD
 
 }  // namespace REVOLVE_ISA
