@@ -96,3 +96,50 @@ def test_a_refused_object_is_named_by_its_index_and_nothing_is_added():
         scene.add_revolutions(np.zeros((10, 4, 3)))
     # Nothing was added: the next id is 0.
     assert list(scene.add_revolutions(profiles[:2])) == [0, 1]
+
+
+def test_a_pickled_scene_keeps_its_bulk_added_objects_and_casts_while_others_add():
+    """The bulk call's objects travel in a pickle (each keeps its recipe), and the call runs while
+    other threads cast on another scene: same hits after the round trip, bit for bit."""
+    import pickle
+    import threading
+
+    rng = np.random.default_rng(SEED + 42)
+    count = 50
+    profiles, radius, height = cylinders(rng, count)
+    matrices = np.stack([placement(1.0, (0, 0, 1), 0, (3.0 * i, 0, 0)) for i in range(count)])
+    rays = np.zeros((count, 6), dtype=np.float32)
+    rays[:, 0] = 3.0 * np.arange(count)
+    rays[:, 1] = -10
+    rays[:, 2] = 0.5 * height
+    rays[:, 4] = 1
+
+    other = revolve.RaycastingScene()
+    other.add_revolutions(profiles, matrices)
+    before = other.cast_rays(rays)
+    stop = threading.Event()
+    faults = []
+
+    def cast():
+        while not stop.is_set():
+            got = other.cast_rays(rays)
+            if not np.array_equal(got["t_hit"], before["t_hit"]):
+                faults.append("a cast during another scene's bulk add changed its answer")
+
+    casters = [threading.Thread(target=cast) for _ in range(2)]
+    for thread in casters:
+        thread.start()
+    try:
+        scene = revolve.RaycastingScene()
+        ids = scene.add_revolutions(profiles, matrices)
+    finally:
+        stop.set()
+        for thread in casters:
+            thread.join()
+    assert faults == []
+    first = scene.cast_rays(rays)
+    assert np.all(first["geometry_ids"] == ids)
+    assert np.allclose(first["t_hit"], 10 - radius, rtol=0, atol=1e-5)
+    again = pickle.loads(pickle.dumps(scene)).cast_rays(rays)
+    for key in ("t_hit", "geometry_ids", "primitive_ids", "primitive_uvs", "primitive_normals"):
+        assert np.array_equal(again[key], first[key]), key
