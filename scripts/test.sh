@@ -3,7 +3,7 @@
 # pytest suite), the same suite under AddressSanitizer and UndefinedBehaviorSanitizer (the Python
 # package too, its interpreter started with the sanitizers' runtime preloaded: python/CMakeLists.txt),
 # and a short libFuzzer run of every fuzz target.
-# REVOLVE_FUZZ_SECONDS sets the fuzzing time per target (default 25; 0 skips fuzzing).
+# REVOLVE_FUZZ_SECONDS sets the fuzzing time per target (default 15; 0 skips fuzzing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh --test
@@ -33,7 +33,7 @@ cmake --build build-sanitize
 ctest --test-dir build-sanitize --output-on-failure --no-tests=error -j"$jobs"
 echo "== sanitizer build and tests: ${SECONDS} s so far"
 
-seconds=${REVOLVE_FUZZ_SECONDS:-25}
+seconds=${REVOLVE_FUZZ_SECONDS:-15}
 if [[ "$seconds" != 0 ]]; then
   echo "== libFuzzer, ${seconds} s per target"
   tests/fuzz/run.sh "$seconds" build-fuzz
