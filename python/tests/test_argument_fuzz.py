@@ -219,7 +219,7 @@ def make_case(seed, i, files, objects):
     m = Maker(rng, files)
     can, lidar, tool_scene = objects["can"], objects["lidar"], objects["scene"]
     spline_points = {"quadratic": 3, "bezier": 4}
-    function = m.pick(["add_revolution", "add_revolution", "add_triangles", "load", "cast_rays", "test_occlusions",
+    function = m.pick(["add_revolution", "add_revolution", "add_revolutions", "add_triangles", "load", "cast_rays", "test_occlusions",
                        "count_intersections", "list_intersections", "compute_closest_points", "compute_distance", "compute_signed_distance",
                        "compute_occupancy", "create_rays_pinhole", "Scene", "Lidar", "Lidar.scan", "ScanFile", "ScanFile.write",
                        "cylinder_clearance", "read_poses", "scan_shard", "shard_poses", "tessellate"])
@@ -239,6 +239,28 @@ def make_case(seed, i, files, objects):
             [np.eye(4), np.diag([2.0, 2.0, 2.0, 1.0]), np.eye(4).tolist(), None]), 0.4)
         maybe("tolerance", lambda: m.pick([0.01, 0.5, 10.0, 0, -1, float("nan"), "0.1", [0.1], None, np.float32(0.1), True, 1e-300]), 0.3)
         call = lambda: revolve.RaycastingScene().add_revolution(*args, **kwargs)  # noqa: E731
+    elif function == "add_revolutions":
+        count = m.pick([1, 2, 3])
+        profiles = [m.array(2, rows=(2, 6), valid_dtype="float64") for _ in range(count)]
+        form = m.rng.randrange(4)
+        if form == 0:  # an (N, P, 2) array when the profiles are arrays of one shape, else the list
+            try:
+                args = [np.stack([np.asarray(p, dtype="float64") for p in profiles])]
+            except (TypeError, ValueError):
+                args = [profiles]
+        elif form == 1:
+            args = [profiles]  # a sequence of (P, 2) array-likes, some hostile
+        elif form == 2:
+            args = [tuple(profiles)]
+        else:
+            args = [m.pick([profiles[0], np.zeros((count, 4, 3)), np.zeros((count, 0, 2)), np.zeros((0, 4, 2)), [], None, "points",
+                            np.array([[[0, 0], [1, 0], [1, 1]]], dtype=complex), np.ones((count, 4, 2), dtype=bool)])]
+        maybe("transforms", lambda: m.pick([np.stack([np.eye(4)] * count), np.stack([np.diag([2.0, 2.0, 2.0, 1.0])] * count),
+                                             np.zeros((count, 4, 4)), np.stack([np.eye(4)] * (count + 1)), m.array(4, rows=(4, 4)),
+                                             [np.eye(4).tolist()] * count, np.full((count, 4, 4), np.nan), None]), 0.5)
+        maybe("spline", lambda: m.string(["linear", "quadratic", "bezier", "catmull-rom", "natural"]), 0.3)
+        maybe("tolerance", lambda: m.pick([0.01, 0, -1, float("nan"), "0.1", None, np.float32(0.1)]), 0.2)
+        call = lambda: revolve.RaycastingScene().add_revolutions(*args, **kwargs)  # noqa: E731
     elif function == "add_triangles":
         args = [m.array(3, rows=(3, 6), valid_dtype="float32"), m.array(3, rows=(1, 3), valid_dtype="uint32")]
         if m.chance(0.5) and isinstance(args[1], np.ndarray) and args[1].dtype.kind in "iu":

@@ -1,6 +1,6 @@
 """Queries racing additions: RaycastingScene is used from several Python threads
 at once, every kind of query on some while another adds geometry of every kind (add_revolution with
-and without a transform, add_triangles, load). The rule: no crash, and every answer is one the scene
+and without a transform, add_revolutions, add_triangles, load). The rule: no crash, and every answer is one the scene
 could give at some moment: the probes never see the added geometry (it lies far away), so each
 answers exactly as before any addition; counts are never negative; geometry_count never goes back;
 an id the writer got back is at once traced by its own next query; and a signed distance or an
@@ -140,7 +140,7 @@ def _stress(mode, folder):
     ring = [[5000, 0], [5001, 0], [5001, 1], [5000, 1], [5000, 0]]  # about the axis, 5000 away: no transform needed
     triangles = (np.array([[-1000, -1000, 0], [-999, -1000, 0], [-999, -999, 1], [-1000, -999, 1]], np.float32),
                  np.array([[0, 1, 2], [0, 2, 3]], np.uint32))
-    kinds = ["transform", "no transform"] if mode == "revolutions" else ["transform", "no transform", "triangles", "load"]
+    kinds = ["transform", "no transform", "bulk"] if mode == "revolutions" else ["transform", "no transform", "bulk", "triangles", "load"]
 
     threads = [threading.Thread(target=reader, args=(j,)) for j in range(READERS)]
     for t in threads:
@@ -162,6 +162,16 @@ def _stress(mode, folder):
             visible += 1
         elif kind == "no transform":
             ids = [s.add_revolution(ring)]
+        elif kind == "bulk":
+            # Two at once (add_revolutions builds them on TBB's threads without the GIL), at y = 70 and 80.
+            m = np.stack([np.eye(4)] * 2)
+            m[:, :3, 3] = [[10 + 3 * i, 70, 0], [10 + 3 * i, 80, 0]]
+            ids = list(s.add_revolutions(np.array([small, small], np.float64), transforms=m))
+            x = np.float32(10 + 3 * i)
+            hit = s.cast_rays(np.array([[x, 75, 0.25, 0, 1, 0]], np.float32), nthreads=(i % 2) * 2)
+            if len(ids) != 2 or hit["geometry_ids"][0] != ids[1] or not abs(hit["t_hit"][0] - 4.9) < 1e-4:
+                fail(f"addition {i}: ids {ids}; the ray towards the second hit {hit['geometry_ids'][0]} at t = {hit['t_hit'][0]}")
+            visible += 1
         elif kind == "triangles":
             mesh_added.set()
             ids = [s.add_triangles(*triangles)]
