@@ -2,6 +2,7 @@
 // shapes, against the one-quadratic user primitive, in CPU time of this thread.
 //
 //   revolve-kernel-timing SHAPE POINTS,POINTS,... incoherent|camera8|camera16|shadow REPETITIONS [--isas LIST]
+//                         [--spline]
 //
 // Prints one line per configuration: "SHAPE CONFIG ns/ray" (the median over the repetitions, each a
 // pass over the rays). --isas (e.g. avx2,avx512) times revolve's copy for each instruction set in
@@ -9,6 +10,8 @@
 // wall time: on a shared machine a process that waits for a core is not charged for the wait, so two builds timed
 // alternately compare fairly (scripts/compare-kernels.sh). It uses only the benchmark library's rays, shapes and
 // scenes, which every revision of the benchmark has had, so it compiles against older builds too.
+// --spline times, beside each polyline, the centripetal Catmull-Rom spline through the same points
+// traced exactly (its curve parts solved at the leaves): the scale benchmark's spline objects.
 #include "ray_batches.h"
 #include "ray_sets.h"
 #include "test_shapes.h"
@@ -57,6 +60,9 @@ int main(int argc, char** argv) {
   cli.add_option("--isas", isaNames, "revolve's copies to time, side by side (default avx2,avx512)")
       ->delimiter(',')
       ->check(CLI::IsMember({"sse2", "avx2", "avx512"}));
+  bool splines = false;
+  cli.add_flag("--spline", splines,
+               "also time the catmull-rom spline through each resolution's points, traced exactly (spline@ISA)");
   cli.add_option("REPETITIONS", repetitions, "timed repetitions (the median is reported)")
       ->required()
       ->check(CLI::Range(1, 1000));
@@ -118,6 +124,12 @@ int main(int argc, char** argv) {
         config.points = n;
         scenes.emplace_back("mibit_" + std::to_string(n) + "@" + isa,
                             std::make_unique<TracedScene>(device, monitor, *shape, config, sphere));
+        if (splines) {
+          const Spline curve(SplineKind::catmullRom, shape->sample(n));
+          scenes.emplace_back("spline_" + std::to_string(n) + "@" + isa,
+                              std::make_unique<TracedScene>(device, monitor, *shape, curve,
+                                                            MethodConfig{.kind = MethodKind::spline}, sphere));
+        }
       }
     }
     detail::limitIsa(detail::Isa::avx512);

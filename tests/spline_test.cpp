@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <string>
 
 namespace revolve {
@@ -317,9 +319,48 @@ TEST(SplineTest, ShapesReportTheirParts) {
   // A torus circle in 3 arcs of 120 degrees: each arc turns through an extremum of r or z and splits.
   const Shape torus{Spline(SplineKind::bezier, testing::bezierTorus(0.6, 0.25, 3))};
   EXPECT_EQ(torus.profile().segmentCount(), 6u);
+  // Its arcs start at 0, 120 and 240 degrees: one turn inside each (at 90, 180, 270), two parts each.
+  for (std::uint32_t k = 0; k < 6; ++k) EXPECT_EQ(torus.splinePiece(k), k / 2) << "part " << k;
   // Arc length: a quarter of the sphere's circumference over its half.
   EXPECT_NEAR(shape.profile().arcLength().back(), M_PI, 1e-5);
   EXPECT_THROW(Shape(sphere, BuildOptions{.method = Method::kajiya}), std::invalid_argument);
+}
+
+// Every part is named after a piece that holds it: its ends (the profile's points k and k + 1) lie in
+// the box of that piece's control points (the curve lies in their hull), within a few roundings;
+// the pieces follow the curve's order, and each has a part.
+TEST(SplineTest, EachPartsPieceHoldsIt) {
+  for (const testing::NamedSpline& s : testing::closedSplines()) {
+    SCOPED_TRACE(s.name);
+    const Spline spline(s.kind, s.points);
+    const Shape shape(spline);
+    const std::span<const Point2> b = spline.bezier(), points = shape.profile().points();
+    double extent = 0.0;
+    for (const Point2& p : b) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
+    // A few roundings of values up to 2 extents (de Casteljau's split points, z - centre + centre).
+    const double rounding = 0x1p-48 * extent;
+    std::uint32_t previous = 0;
+    for (std::uint32_t k = 0; k < shape.profile().segmentCount(); ++k) {
+      const std::uint32_t piece = shape.splinePiece(k);
+      ASSERT_LT(piece, spline.pieceCount()) << "part " << k;
+      EXPECT_TRUE(piece == previous || piece == previous + 1) << "part " << k << ": piece " << piece;
+      previous = piece;
+      for (const Point2& p : {points[k], points[k + 1]}) {
+        bool inside = true;
+        for (const auto coordinate : {&Point2::r, &Point2::z}) {
+          double low = b[3 * piece].*coordinate, high = low;
+          for (int i = 1; i < 4; ++i) {
+            low = std::min(low, b[3 * piece + i].*coordinate);
+            high = std::max(high, b[3 * piece + i].*coordinate);
+          }
+          inside = inside && p.*coordinate >= low - rounding && p.*coordinate <= high + rounding;
+        }
+        EXPECT_TRUE(inside) << "part " << k << " (piece " << piece << ") ends at r = " << p.r << ", z = " << p.z;
+      }
+    }
+    EXPECT_EQ(shape.splinePiece(0), 0u);
+    EXPECT_EQ(previous, spline.pieceCount() - 1);
+  }
 }
 
 }  // namespace

@@ -118,16 +118,16 @@ nlohmann::ordered_json shapeBreakdown(const Shape& shape) {
                         impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
                         impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell);
   parts["wide_tree"] = impl.wide.memoryBytes();
-  parts["curve_parts"] = impl.parts.capacity() * sizeof(detail::CurvePart);
-  parts["arc_tables"] = impl.arcTable.capacity() * sizeof(double);
+  // A spline shape's parts with the index of its pieces' first parts; its records of v; its curve.
+  const detail::SplineData* curve = impl.curve.get();
+  parts["curve_parts"] = impl.parts.capacity() * sizeof(detail::CurvePart) +
+                         (curve ? curve->firstPartOfPiece.capacity() * sizeof(std::uint32_t) : 0);
+  parts["arc_tables"] = curve ? curve->arcRecords.capacity() * sizeof(double) : 0;
   std::uint32_t mostSteps = 0;
-  for (const detail::CurvePart& part : impl.parts) mostSteps = std::max(mostSteps, part.arcSteps);
+  for (const detail::CurvePart& part : impl.parts) mostSteps = std::max<std::uint32_t>(mostSteps, part.arcSteps);
   parts["curve_part_count"] = impl.parts.size();
   parts["arc_steps_most"] = mostSteps;
-  parts["spline"] = impl.spline ? impl.spline->points().size() * sizeof(Point2) +
-                                      impl.spline->bezier().size() * sizeof(Point2) +
-                                      impl.spline->pieceCount() * sizeof(std::size_t)
-                                : 0;
+  parts["spline"] = curve ? sizeof(detail::SplineData) + curve->spline.memoryBytes() : 0;
   parts["total"] = shape.memoryBytes();
   return parts;
 }

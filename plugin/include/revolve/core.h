@@ -212,18 +212,21 @@ class Spline {
   std::span<const Point2> bezier() const noexcept { return bezier_; }
   std::size_t pieceCount() const noexcept { return (bezier_.size() - 1) / 3; }
   // Index in points() of the point where piece i starts (for messages and the readers' lines).
-  std::size_t pieceStart(std::size_t piece) const noexcept { return pieceStart_[piece]; }
+  std::size_t pieceStart(std::size_t piece) const noexcept;
   // The point of piece `piece` at parameter u in [0, 1] (de Casteljau).
   [[nodiscard]] Point2 at(std::size_t piece, double u) const noexcept;
   // Closed: the curve bounds a solid (its ends meet, or both lie on the axis).
   bool closed() const noexcept { return closed_; }
   const std::vector<ProfileWarning>& warnings() const noexcept { return warnings_; }
+  std::size_t memoryBytes() const noexcept;  // heap bytes held by the spline
 
  private:
   SplineKind kind_;
   std::vector<Point2> points_;
   std::vector<Point2> bezier_;
-  std::vector<std::size_t> pieceStart_;
+  // A linear spline's pieceStart (the kept points' indices in the input); the other kinds' pieces
+  // start at every first, second or third point, which the kind says.
+  std::vector<std::size_t> linearPieceStart_;
   std::vector<ProfileWarning> warnings_;
   bool closed_ = false;
 };

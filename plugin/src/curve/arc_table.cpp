@@ -3,6 +3,7 @@
 #include "curve/arc_length.h"
 
 #include <cmath>
+#include <vector>
 
 namespace revolve::detail {
 namespace {
@@ -16,8 +17,13 @@ double adaptiveLength(const double r[4], const double z[4], double a, double b, 
          adaptiveLength(r, z, middle, b, right, 0.5 * tolerance, depth + 1);
 }
 
+// `whole`: one five-point rule over [a, b], when the caller has it already.
+double lengthBetween(const double r[4], const double z[4], double a, double b, double tolerance, double whole) {
+  return adaptiveLength(r, z, a, b, whole, tolerance, 0);
+}
+
 double lengthBetween(const double r[4], const double z[4], double a, double b, double tolerance) {
-  return adaptiveLength(r, z, a, b, arcLengthBetween(r, z, a, b), tolerance, 0);
+  return lengthBetween(r, z, a, b, tolerance, arcLengthBetween(r, z, a, b));
 }
 
 }  // namespace
@@ -27,9 +33,13 @@ ArcTable arcTableOf(const double r[4], const double z[4]) {
   const double tolerance = 0x1p-40 * estimate;
   for (std::uint32_t steps = 1;; steps *= 2) {
     ArcTable table{0.0, steps, std::vector<double>(steps + 1)};
+    std::vector<double> stepRule(steps);  // one five-point rule over each step
     double cumulative = 0.0;
     for (std::uint32_t k = 1; k <= steps; ++k) {
-      cumulative += lengthBetween(r, z, double(k - 1) / steps, double(k) / steps, tolerance / steps);
+      // One step spans [0, 1]: its rule is the estimate's (the same evaluations, not repeated).
+      const double from = double(k - 1) / steps, to = double(k) / steps;
+      stepRule[k - 1] = steps == 1 ? estimate : arcLengthBetween(r, z, from, to);
+      cumulative += lengthBetween(r, z, from, to, tolerance / steps, stepRule[k - 1]);
       table.cumulative[k] = cumulative;
     }
     table.length = cumulative;
@@ -42,8 +52,12 @@ ArcTable arcTableOf(const double r[4], const double z[4]) {
       double exact = 0.0;
       for (int j = 1; j <= 8 && fine; ++j) {
         const double from = (k + (j - 1) / 8.0) / steps, to = (k + j / 8.0) / steps;
-        exact += lengthBetween(r, z, from, to, tolerance / (8 * steps));
-        fine = std::abs(arcLengthBetween(r, z, start, to) - exact) <= 0x1p-31 * table.length;
+        const double eighth = arcLengthBetween(r, z, from, to);
+        exact += lengthBetween(r, z, from, to, tolerance / (8 * steps), eighth);
+        // From the step's start to its first eighth the hit's rule is the eighth's own (from ==
+        // start exactly), and to its end the step's: the same arguments, evaluated once.
+        const double rule = j == 1 ? eighth : j == 8 ? stepRule[k] : arcLengthBetween(r, z, start, to);
+        fine = std::abs(rule - exact) <= 0x1p-31 * table.length;
       }
     }
     if (fine) return table;

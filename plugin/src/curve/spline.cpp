@@ -41,6 +41,11 @@ bool onCurve(SplineKind kind, std::size_t i) {
   }
 }
 
+// The points a piece advances by in points() (a linear spline keeps its own table: repeats dropped).
+std::size_t pointsPerPiece(SplineKind kind) {
+  return kind == SplineKind::bezier ? 3 : kind == SplineKind::quadratic ? 2 : 1;
+}
+
 void checkCount(SplineKind kind, std::size_t n) {
   const std::string name = splineKindName(kind);
   const std::size_t last = n == 0 ? 0 : n - 1;
@@ -106,7 +111,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     points_.assign(polyline.points().begin(), polyline.points().end());
     warnings_ = polyline.warnings();
     bezier_ = detail::bezierOfPolyline(points_);
-    for (std::size_t i = 0; i + 1 < points_.size(); ++i) pieceStart_.push_back(polyline.sourceIndex()[i]);
+    for (std::size_t i = 0; i + 1 < points_.size(); ++i) linearPieceStart_.push_back(polyline.sourceIndex()[i]);
     closed_ = polyline.closed();
     return;
   }
@@ -127,7 +132,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
       }
     }
   }
-  const std::size_t step = kind == SplineKind::bezier ? 3 : kind == SplineKind::quadratic ? 2 : 1;
+  const std::size_t step = pointsPerPiece(kind);
   switch (kind) {
     case SplineKind::quadratic:
       bezier_ = detail::bezierOfQuadratic(points_);
@@ -145,9 +150,8 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
       break;
   }
   const std::size_t pieces = pieceCount();
-  for (std::size_t i = 0; i < pieces; ++i) pieceStart_.push_back(i * step);
   const auto describePiece = [&](std::size_t piece) {
-    const std::size_t first = pieceStart_[piece], last = first + step;
+    const std::size_t first = pieceStart(piece), last = first + step;
     return "the piece from " + describePoint(first, points_[first]) + " to " + describePoint(last, points_[last]);
   };
 
@@ -159,14 +163,14 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     double reach = 0.0;  // how far the control hull reaches from the first point
     for (int k = 0; k < 4; ++k) {
       if (!(std::abs(c[k].r) <= Profile::kMaxCoordinate && std::abs(c[k].z) <= Profile::kMaxCoordinate)) {
-        throw ProfileError(ProfileError::Rule::outOfRange, pieceStart_[i],
+        throw ProfileError(ProfileError::Rule::outOfRange, pieceStart(i),
                            describePiece(i) + " has a control point (r = " + formatNumber(c[k].r) +
                                ", z = " + formatNumber(c[k].z) + ") beyond +-2^60");
       }
       reach = std::max(reach, std::hypot(c[k].r - c[0].r, c[k].z - c[0].z));
     }
     if (reach < shortest) {
-      throw ProfileError(ProfileError::Rule::segmentTooShort, pieceStart_[i],
+      throw ProfileError(ProfileError::Rule::segmentTooShort, pieceStart(i),
                          describePiece(i) + " is " + formatNumber(reach) + " long at most, below 2^-60 of the extent " +
                              formatNumber(extent) + ", which the kernel cannot resolve");
     }
@@ -174,7 +178,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     // A piece whose control values of r are all zero lies on the axis all along (r never turns
     // there, so the test below would not see it): a surface of no area between its points.
     if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0 && r[3] == 0.0) {
-      throw ProfileError(ProfileError::Rule::crossesAxis, pieceStart_[i],
+      throw ProfileError(ProfileError::Rule::crossesAxis, pieceStart(i),
                          describePiece(i) +
                              " lies on the axis (r = 0 all along); the curve must keep r > 0 between the points it "
                              "passes through (it may reach the axis only at such a point)");
@@ -190,7 +194,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
           detail::kCubicAtError * std::max({std::abs(r[0]), std::abs(r[1]), std::abs(r[2]), std::abs(r[3])});
       if (radius <= rounding) {
         throw ProfileError(
-            ProfileError::Rule::crossesAxis, pieceStart_[i],
+            ProfileError::Rule::crossesAxis, pieceStart(i),
             describePiece(i) + (radius < 0.0 ? " crosses the axis: r = " : " touches the axis: r = ") +
                 formatNumber(radius) + (radius < 0.0 ? "" : " (zero within rounding)") +
                 " at u = " + formatNumber(turns[k]) +
@@ -209,7 +213,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     const std::size_t a = parts[pair->first].piece, b = parts[pair->second].piece;
     const std::string where = a == b ? describePiece(a) + " crosses or touches itself"
                                      : describePiece(a) + " and " + describePiece(b) + " cross or touch";
-    throw ProfileError(ProfileError::Rule::selfIntersecting, pieceStart_[a],
+    throw ProfileError(ProfileError::Rule::selfIntersecting, pieceStart(a),
                        where +
                            " (or come within 2^-40 of the extent, run that close for long, or fold back in a cusp); a "
                            "profile must not cross or touch itself");
@@ -217,6 +221,20 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
 
   const Point2 first = bezier_.front(), last = bezier_.back();
   closed_ = (first.r == last.r && first.z == last.z) || (first.r == 0.0 && last.r == 0.0);
+}
+
+std::size_t Spline::pieceStart(std::size_t piece) const noexcept {
+  return kind_ == SplineKind::linear ? linearPieceStart_[piece] : piece * pointsPerPiece(kind_);
+}
+
+std::size_t Spline::memoryBytes() const noexcept {
+  std::size_t bytes = points_.capacity() * sizeof(Point2) + bezier_.capacity() * sizeof(Point2) +
+                      linearPieceStart_.capacity() * sizeof(std::size_t) +
+                      warnings_.capacity() * sizeof(ProfileWarning);
+  for (const ProfileWarning& warning : warnings_) {
+    if (warning.message.capacity() > std::string().capacity()) bytes += warning.message.capacity() + 1;
+  }
+  return bytes;
 }
 
 Point2 Spline::at(std::size_t piece, double u) const noexcept {

@@ -42,20 +42,21 @@
 
 namespace revolve::detail {
 
-// A monotone part in the shape's local frame, as the kernel and the hit's attributes need it.
+// A monotone part in the shape's local frame, as the kernel and the hit's attributes need it: 72
+// bytes, its control points first (a scene of a million 64-point splines holds some 77 million).
+// What only a hit's v needs (curve/arc_record.h) and the Bezier piece it came from (Shape::
+// splinePiece) are kept beside the parts, in detail::SplineData.
 struct CurvePart {
   double r[4], z[4];  // control points; (r[0], z[0]) and (r[3], z[3]) are exactly the part's vertices
+  // A curved part's record of v in SplineData::arcRecords (unused for a straight part, whose v is its
+  // chord's: SegmentFrame), and its table's steps (at most arc_table.h's 1,024).
+  std::uint32_t arcRecord;
+  std::uint16_t arcSteps;
   // Its control points lie within the coordinates' rounding of its chord (or it is horizontal): the
   // surface is a truncated cone or an annulus, and Wang's kernel solves it.
   bool straight;
-  std::uint32_t piece;  // the spline's Bezier piece it belongs to
-  double u0, u1;        // its parameter range in that piece
-  double v0, dv;        // v (normalised arc length) at its start, and its growth along it
-  double length;        // its arc length
-  // Its table of v in detail::ShapeImpl::arcTable: v at u = k / arcSteps, k = 0 .. arcSteps, from
-  // which a hit's v is computed (curve/arc_length.h's arcLengthFrom).
-  std::uint32_t arcOffset, arcSteps;
 };
+static_assert(sizeof(CurvePart) == 72, "the control points and 8 bytes: a million spline shapes hold 77 million");
 
 inline namespace REVOLVE_ISA {
 

@@ -1,4 +1,5 @@
 // Building a Shape: the local frame, the bounding sphere and box, and the search structures.
+#include "curve/arc_record.h"
 #include "curve/arc_table.h"
 #include "curve/monotone_parts.h"
 #include "shape/shape_impl.h"
@@ -144,8 +145,11 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   double radius = 0.0;
   std::vector<detail::CurvePart> local;
   std::vector<Point2> knots{{parts[0].c[0].r, parts[0].c[0].z - zCentre}}, inner;
-  std::vector<double> arc{0.0}, arcTable;
+  std::vector<double> arc{0.0}, lengths;
+  std::vector<detail::ArcTable> tables;  // the curved parts' (a straight part's v is its chord's)
+  auto data = std::make_unique<detail::SplineData>(detail::SplineData{std::move(curve), {}, {}});
   local.reserve(parts.size());
+  lengths.reserve(parts.size());
   for (const detail::MonotonePart& part : parts) {
     detail::CurvePart c{};
     for (int i = 0; i < 4; ++i) {
@@ -154,41 +158,46 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
       radius = std::max(radius, std::hypot(c.r[i], c.z[i]));
     }
     c.straight = isStraight(part, extent);
-    c.piece = part.piece;
-    c.u0 = part.u0;
-    c.u1 = part.u1;
-    // Its length and its table of arc length (normalised to v below).
+    if (data->firstPartOfPiece.size() == part.piece) data->firstPartOfPiece.push_back(std::uint32_t(local.size()));
+    // Its length, and for a curved part its table of arc length (normalised to v below).
     detail::ArcTable table = detail::arcTableOf(c.r, c.z);
-    c.length = table.length;
-    c.arcOffset = std::uint32_t(arcTable.size());
-    c.arcSteps = table.steps;
-    arcTable.insert(arcTable.end(), table.cumulative.begin(), table.cumulative.end());
+    lengths.push_back(table.length);
+    if (!c.straight) tables.push_back(std::move(table));
     knots.push_back({c.r[3], c.z[3]});
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
-    arc.push_back(arc.back() + c.length);
+    arc.push_back(arc.back() + lengths.back());
     local.push_back(c);
   }
+  data->firstPartOfPiece.push_back(std::uint32_t(local.size()));
   const double total = arc.back();
-  for (std::size_t k = 0; k < local.size(); ++k) {
+  std::vector<double> v0(local.size()), dv(local.size());
+  std::size_t recordSize = 0;
+  for (const detail::ArcTable& table : tables) recordSize += detail::arcRecordSize(table.steps);
+  std::vector<double>& records = data->arcRecords;
+  records.reserve(recordSize);
+  for (std::size_t k = 0, curved = 0; k < local.size(); ++k) {
     detail::CurvePart& c = local[k];
-    c.v0 = arc[k] / total;
-    c.dv = c.length / total;
-    double* entry = &arcTable[c.arcOffset];
-    for (std::uint32_t i = 0; i <= c.arcSteps; ++i) entry[i] = c.v0 + entry[i] / total;
-    entry[c.arcSteps] = c.v0 + c.dv;  // the next part's v0, as the sum has it
+    v0[k] = arc[k] / total;
+    dv[k] = lengths[k] / total;
+    if (c.straight) continue;
+    const detail::ArcTable& table = tables[curved++];
+    c.arcRecord = std::uint32_t(records.size());
+    c.arcSteps = std::uint16_t(table.steps);
+    records.push_back(dv[k] / lengths[k]);
+    records.push_back(v0[k] + dv[k]);
+    for (std::uint32_t i = 0; i < table.steps; ++i) records.push_back(v0[k] + table.cumulative[i] / total);
   }
+  data->firstPartOfPiece.shrink_to_fit();  // grown by insertion
 
   std::vector<Point2> global;
   global.reserve(knots.size());
   for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
-  impl_ = std::make_unique<detail::ShapeImpl>(Profile(Profile::Unchecked{}, std::move(global), arc, curve.closed()),
-                                              options);
+  impl_ = std::make_unique<detail::ShapeImpl>(
+      Profile(Profile::Unchecked{}, std::move(global), arc, data->spline.closed()), options);
   detail::ShapeImpl& impl = *impl_;
-  impl.spline.emplace(std::move(curve));
   impl.parts = std::move(local);
-  impl.arcTable = std::move(arcTable);
-  impl.arcTable.shrink_to_fit();  // grown by insertion: its slack would be a third of it
+  impl.curve = std::move(data);
   impl.local = std::move(knots);
   impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
@@ -197,7 +206,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     // The chord's frame: what a straight part's hit needs (as a segment's); v from the curve's length.
     const Point2 a = impl.local[k], b = impl.local[k + 1];
     const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez, length = std::sqrt(length2);
-    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, impl.parts[k].v0, impl.parts[k].dv});
+    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, v0[k], dv[k]});
   }
   buildSearch(impl, options, inner);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
@@ -208,11 +217,15 @@ Shape::Shape(Shape&&) noexcept = default;
 Shape& Shape::operator=(Shape&&) noexcept = default;
 
 const Profile& Shape::profile() const noexcept { return impl_->profile; }
-const Spline* Shape::spline() const noexcept { return impl_->spline ? &*impl_->spline : nullptr; }
-std::uint32_t Shape::splinePiece(std::uint32_t segment) const noexcept { return impl_->parts[segment].piece; }
+const Spline* Shape::spline() const noexcept { return impl_->curve ? &impl_->curve->spline : nullptr; }
+std::uint32_t Shape::splinePiece(std::uint32_t segment) const noexcept {
+  // The last piece whose first part is at or before the segment.
+  const std::vector<std::uint32_t>& first = impl_->curve->firstPartOfPiece;
+  return std::uint32_t(std::upper_bound(first.begin(), first.end(), segment) - first.begin() - 1);
+}
 const BuildOptions& Shape::options() const noexcept { return impl_->options; }
 
-bool Shape::closed() const noexcept { return impl_->spline ? impl_->spline->closed() : impl_->profile.closed(); }
+bool Shape::closed() const noexcept { return impl_->curve ? impl_->curve->spline.closed() : impl_->profile.closed(); }
 Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 
 std::size_t Shape::treeNodeCount() const noexcept {
@@ -242,11 +255,13 @@ std::size_t Shape::memoryBytes() const noexcept {
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
-         impl.parts.capacity() * sizeof(detail::CurvePart) + impl.arcTable.capacity() * sizeof(double) +
-         (impl.spline ? impl.spline->points().size() * sizeof(Point2) + impl.spline->bezier().size() * sizeof(Point2) +
-                            impl.spline->pieceCount() * sizeof(std::size_t)
-                      : 0) +
+         impl.parts.capacity() * sizeof(detail::CurvePart) + (impl.curve ? impl.curve->memoryBytes() : 0) +
          impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
+}
+
+std::size_t detail::SplineData::memoryBytes() const noexcept {
+  return sizeof(SplineData) + spline.memoryBytes() + arcRecords.capacity() * sizeof(double) +
+         firstPartOfPiece.capacity() * sizeof(std::uint32_t);
 }
 
 const detail::ShapeImpl& detail::implOf(const Shape& shape) noexcept { return *shape.impl_; }

@@ -10,7 +10,9 @@
 #include "mibit/mibit_tree.h"
 #include "mibit/wide_tree.h"
 
-#include <optional>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace revolve {
@@ -24,13 +26,23 @@ struct SegmentFrame {
   double v0, dv;      // v at the segment's start, and its growth along the segment
 };
 
+// What a spline shape holds beyond its parts: behind a pointer, so that a polyline shape pays 8
+// bytes for it rather than a Spline's and two vectors' headers.
+struct SplineData {
+  Spline spline;                   // the curve traced (Shape::spline)
+  std::vector<double> arcRecords;  // the curved parts' records of v (CurvePart::arcRecord, curve/arc_record.h)
+  // The index of each Bezier piece's first part, then the part count: the parts are in curve order
+  // and a piece has one to five (Shape::splinePiece).
+  std::vector<std::uint32_t> firstPartOfPiece;
+  std::size_t memoryBytes() const noexcept;  // its heap bytes, itself included
+};
+
 struct ShapeImpl {
   ShapeImpl(Profile p, const BuildOptions& o) : profile(std::move(p)), options(o) {}
 
-  Profile profile;               // for a spline shape: its monotone parts' ends
-  std::optional<Spline> spline;  // the curve a spline shape traces
-  std::vector<CurvePart> parts;  // a spline shape's monotone parts, one a segment of `profile`
-  std::vector<double> arcTable;  // the parts' tables of v (CurvePart::arcOffset)
+  Profile profile;                          // for a spline shape: its monotone parts' ends
+  std::vector<CurvePart> parts;             // a spline shape's monotone parts, one a segment of `profile`
+  std::unique_ptr<const SplineData> curve;  // a spline shape's curve and its parts' v
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   ShapeFrame frame;

@@ -3,7 +3,7 @@
 
 #include "util/isa.h"
 
-#include "curve/arc_length.h"
+#include "curve/arc_record.h"
 #include "kernel/meridian_ray.h"
 #include "shape/shape_impl.h"
 #include "util/azimuth.h"
@@ -68,9 +68,7 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
   hit.segment = k;
   if constexpr ((kAttributes & kUvAttribute) != 0) {
     hit.u = azimuthFraction(px, py);
-    const double v =
-        arcLengthFrom(&shape.arcTable[part.arcOffset], part.arcSteps, part.r, part.z, u, part.dv / part.length);
-    hit.v = float(std::clamp(v, part.v0, part.v0 + part.dv));
+    hit.v = float(arcRecordV(&shape.curve->arcRecords[part.arcRecord], part.arcSteps, part.r, part.z, u));
   }
   if constexpr ((kAttributes & kNormalAttribute) == 0) return hit;
   const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
