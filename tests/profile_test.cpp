@@ -100,6 +100,28 @@ TEST(ProfileTest, RepeatedConsecutivePointsAreDroppedWithAWarning) {
   EXPECT_EQ(profile.sourceIndex()[2], 3u);
 }
 
+TEST(ProfileTest, SourceIndicesNameTheCallersPointsWhetherOrNotPointsWereDropped) {
+  // Nothing dropped: every point is its own input point.
+  const std::vector<Point2> input{{0, 0}, {1, 0}, {1, 1}, {0, 2}};
+  const Profile kept(input);
+  ASSERT_EQ(kept.sourceIndex().size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(kept.sourceIndex()[k], k);
+  // Repeats dropped at the start, the middle and the end: each kept point names the input point
+  // it was, read by index and by iteration alike.
+  const std::vector<Point2> repeated{{0, 0}, {0, 0}, {1, 0}, {1, 1}, {1, 1}, {1, 1}, {0, 2}, {0, 2}};
+  const Profile dropped(repeated);
+  const std::vector<std::size_t> expected{0, 2, 3, 6};
+  ASSERT_EQ(dropped.sourceIndex().size(), expected.size());
+  std::vector<std::size_t> iterated;
+  for (const std::size_t i : dropped.sourceIndex()) iterated.push_back(i);
+  EXPECT_EQ(iterated, expected);
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(dropped.sourceIndex()[k], expected[k]);
+    EXPECT_EQ(dropped.points()[k].r, repeated[expected[k]].r);
+    EXPECT_EQ(dropped.points()[k].z, repeated[expected[k]].z);
+  }
+}
+
 TEST(ProfileTest, MoreThanTheIndexTypesHoldIsRejected) {
   // A span of kMaxPoints + 1 points over untouched, unreserved virtual memory (zero pages if read):
   // the count is checked before any point is read.

@@ -650,6 +650,53 @@ TEST(SelfIntersectionTest, MatchesBruteForceOnRandomGridPolylines) {
   EXPECT_GT(closedClean, 500);
 }
 
+// A random walk monotone along one axis (z, or r, up or down), with runs across it: the shapes the
+// sweep's shortcut for monotone profiles takes, and the near misses it must leave to the sweep (two
+// runs in a row, which may fold back or overlap).
+std::vector<IntPoint> randomMonotonePolyline(std::mt19937_64& random) {
+  const int grid = 2 + int(random() % 6);
+  const std::size_t length = 2 + random() % 10;
+  const bool alongR = random() & 1, descending = random() & 1;
+  const auto across = [&] { return static_cast<Int>(random() % grid); };
+  std::vector<IntPoint> points{{across(), 0}};
+  while (points.size() < length) {
+    const Int step = random() % 3 == 0 ? 0 : Int(1 + random() % 2);  // 0: a run across the axis
+    IntPoint next{across(), points.back().z + step};
+    if (next.r == points.back().r && next.z == points.back().z) continue;
+    points.push_back(next);
+  }
+  for (IntPoint& p : points) {
+    if (descending) p.z = -p.z;
+    if (alongR) std::swap(p.r, p.z);
+  }
+  return points;
+}
+
+TEST(SelfIntersectionTest, MatchesBruteForceOnRandomMonotonePolylines) {
+  const std::uint64_t seed = revolve::testing::testSeeds({171717}).front();
+  std::mt19937_64 random(seed);
+  int intersecting = 0;
+  int clean = 0;
+  for (int trial = 0; trial < 50000; ++trial) {
+    SCOPED_TRACE(revolve::testing::seedTrace(seed) + ", trial " + std::to_string(trial));
+    const std::vector<IntPoint> integer = randomMonotonePolyline(random);
+    std::vector<Point2> points;
+    // Shifted off the axis so that r >= 0 whichever axis the walk follows.
+    for (const IntPoint p : integer) points.push_back({double(p.r) + 64.0, double(p.z)});
+    const bool expected = bruteHasIntersection(integer);
+    const std::optional<SegmentPair> found = findSelfIntersection(points);
+    ASSERT_EQ(found.has_value(), expected);
+    if (found) {
+      ASSERT_TRUE(bruteForbidden(integer, found->first, found->second))
+          << "reported pair " << found->first << ", " << found->second;
+    }
+    (found ? intersecting : clean) += 1;
+  }
+  std::printf("seed %llu: %d intersecting, %d clean\n", static_cast<unsigned long long>(seed), intersecting, clean);
+  EXPECT_GT(intersecting, 5000);
+  EXPECT_GT(clean, 5000);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Large inputs: must complete (O(n log n), no deep recursion); no time is asserted.
 

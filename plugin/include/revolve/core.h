@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -77,6 +78,42 @@ struct ProfileWarning {
 
 class Spline;
 
+// Index in the caller's input of each point a Profile kept: k itself, unless repeated points were
+// dropped before it (only then are the indices stored). Reads as a span of them would.
+class SourceIndices {
+ public:
+  SourceIndices(const std::size_t* stored, std::size_t count) noexcept : stored_(stored), count_(count) {}
+  std::size_t operator[](std::size_t k) const noexcept { return stored_ != nullptr ? stored_[k] : k; }
+  std::size_t size() const noexcept { return count_; }
+  // Whether every point kept its own index (nothing was dropped, nothing is stored).
+  bool identity() const noexcept { return stored_ == nullptr; }
+
+  class Iterator {
+   public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = std::size_t;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = std::size_t;
+    Iterator() noexcept = default;
+    Iterator(const SourceIndices* indices, std::size_t k) noexcept : indices_(indices), k_(k) {}
+    std::size_t operator*() const noexcept { return (*indices_)[k_]; }
+    Iterator& operator++() noexcept { return ++k_, *this; }
+    Iterator operator++(int) noexcept { return {indices_, k_++}; }
+    bool operator==(const Iterator& other) const noexcept { return k_ == other.k_; }
+
+   private:
+    const SourceIndices* indices_ = nullptr;
+    std::size_t k_ = 0;
+  };
+  Iterator begin() const noexcept { return {this, 0}; }
+  Iterator end() const noexcept { return {this, count_}; }
+
+ private:
+  const std::size_t* stored_;
+  std::size_t count_;
+};
+
 class Profile {
  public:
   // Largest accepted point count: tree node indices are 32-bit and a tree has up to 2 nodes a point.
@@ -125,7 +162,9 @@ class Profile {
   // Cumulative arc length at each point; arcLength().back() is the total length.
   std::span<const double> arcLength() const noexcept { return arcLength_; }
   // Index in the caller's input of each kept point.
-  std::span<const std::size_t> sourceIndex() const noexcept { return sourceIndex_; }
+  SourceIndices sourceIndex() const noexcept {
+    return {sourceIndex_.empty() ? nullptr : sourceIndex_.data(), points_.size()};
+  }
   // For a profile made by fromCurve from a curved spline: where each point lies on the curve, as
   // T = k + u (the point is curve.at(k, u); T = pieceCount() is the curve's end). Empty otherwise.
   std::span<const double> curveParameters() const noexcept { return curveParameters_; }
@@ -136,7 +175,7 @@ class Profile {
 
   std::vector<Point2> points_;
   std::vector<double> arcLength_;
-  std::vector<std::size_t> sourceIndex_;
+  std::vector<std::size_t> sourceIndex_;  // empty while no point was dropped (SourceIndices)
   std::vector<double> curveParameters_;
   std::vector<ProfileWarning> warnings_;
   bool closed_ = false;

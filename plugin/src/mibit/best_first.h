@@ -20,8 +20,8 @@ namespace revolve::detail {
 // Node boxes are floats rounded outwards (mibit_tree.h), and inside a monotone interval a run's box
 // is spanned by its end vertices, so every box holds its segments and no segment that could
 // improve the best is skipped.
-template <class Bound, class Pruned, class Visit>
-void searchBestFirst(const MibitTree& tree, std::span<const Point2> local, Bound bound, Pruned pruned, Visit visit) {
+template <class Points, class Bound, class Pruned, class Visit>
+void searchBestFirst(const MibitTree& tree, const Points& local, Bound bound, Pruned pruned, Visit visit) {
   struct NodeEntry {
     std::uint32_t node;
     double bound;

@@ -10,6 +10,7 @@
 
 #include "util/isa.h"
 
+#include "kernel/local_points.h"
 #include "kernel/meridian_ray.h"
 #include "kernel/shell_tests.h"
 #include "mibit/mibit_tree.h"
@@ -39,7 +40,7 @@ struct Node {
 // Visits the segments of `interval` the search cannot rule out, nearest first; returns true when
 // visitSegment asked to stop. The caller has already tested the interval's own shell.
 template <bool kCount, class VisitSegment>
-inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interval, std::span<const Point2> points,
+inline bool searchInterval(const MibitTree& tree, const MonotoneInterval& interval, LocalPoints points,
                            bool rangeSearch, const MeridianRay& ray, double& hi, VisitSegment&& visitSegment,
                            Stats& stats) noexcept {
   using namespace interval_search_internal;

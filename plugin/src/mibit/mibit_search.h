@@ -11,6 +11,7 @@
 
 #include "util/isa.h"
 
+#include "kernel/local_points.h"
 #include "kernel/meridian_ray.h"
 #include "kernel/shell_tests.h"
 #include "mibit/interval_search.h"
@@ -49,8 +50,8 @@ inline bool enterMibitNode(const MibitNode& node, const MeridianRay& ray, double
 // Calls visitSegment(k) for every segment k the search cannot rule out, nearest regions first.
 // visitSegment returns true to end the search (any-hit queries); it may lower `hi` (nearest hit).
 template <bool kCount, class VisitSegment>
-inline void searchMibit(const MibitTree& tree, std::span<const Point2> points, bool rangeSearch, const MeridianRay& ray,
-                        double& hi, VisitSegment&& visitSegment, Stats& stats) noexcept {
+inline void searchMibit(const MibitTree& tree, LocalPoints points, bool rangeSearch, const MeridianRay& ray, double& hi,
+                        VisitSegment&& visitSegment, Stats& stats) noexcept {
   struct Entry {
     std::uint32_t node;
     double s;

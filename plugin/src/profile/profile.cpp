@@ -33,16 +33,17 @@ void checkPoint(std::size_t index, Point2 p) {
 void Profile::checkScale() const {
   double extent = 0.0;
   for (const Point2& p : points_) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
-  detail::checkExtent("profile", sourceIndex_[0], extent);
+  const SourceIndices sourceIndex = this->sourceIndex();
+  detail::checkExtent("profile", sourceIndex[0], extent);
   const double shortest = extent * kMinSegmentFraction;
   for (std::size_t k = 0; k + 1 < points_.size(); ++k) {
     const double length = std::hypot(points_[k + 1].r - points_[k].r, points_[k + 1].z - points_[k].z);
     if (length < shortest) {
-      throw ProfileError(ProfileError::Rule::segmentTooShort, sourceIndex_[k],
-                         "the segment from " + describePoint(sourceIndex_[k], points_[k]) + " to " +
-                             describePoint(sourceIndex_[k + 1], points_[k + 1]) + " has length " +
-                             formatNumber(length) + ", below 2^-60 of the profile's extent " + formatNumber(extent) +
-                             " (" + formatNumber(shortest) + "), which the kernel cannot resolve; merge the points");
+      throw ProfileError(ProfileError::Rule::segmentTooShort, sourceIndex[k],
+                         "the segment from " + describePoint(sourceIndex[k], points_[k]) + " to " +
+                             describePoint(sourceIndex[k + 1], points_[k + 1]) + " has length " + formatNumber(length) +
+                             ", below 2^-60 of the profile's extent " + formatNumber(extent) + " (" +
+                             formatNumber(shortest) + "), which the kernel cannot resolve; merge the points");
     }
   }
 }
@@ -54,16 +55,21 @@ Profile::Profile(std::span<const Point2> input) {
                            std::to_string(kMaxPoints) + " are supported (32-bit tree node indices)");
   }
   points_.reserve(input.size());
-  sourceIndex_.reserve(input.size());
   for (std::size_t i = 0; i < input.size(); ++i) {
     checkPoint(i, input[i]);
     if (!points_.empty() && samePoint(points_.back(), input[i])) {
-      warnings_.push_back({i, describePoint(i, input[i]) + " repeats point " + std::to_string(sourceIndex_.back()) +
-                                  " exactly; dropped"});
+      const std::size_t repeated = sourceIndex_.empty() ? points_.size() - 1 : sourceIndex_.back();
+      warnings_.push_back(
+          {i, describePoint(i, input[i]) + " repeats point " + std::to_string(repeated) + " exactly; dropped"});
+      // From the first dropped point on, the indices differ from the positions: stored from here.
+      if (sourceIndex_.empty()) {
+        sourceIndex_.resize(points_.size());
+        for (std::size_t k = 0; k < points_.size(); ++k) sourceIndex_[k] = k;
+      }
       continue;
     }
     points_.push_back(input[i]);
-    sourceIndex_.push_back(i);
+    if (!sourceIndex_.empty()) sourceIndex_.push_back(i);
   }
   if (points_.size() < 2) {
     throw ProfileError(ProfileError::Rule::tooFewPoints, input.empty() ? 0 : input.size() - 1,
@@ -74,11 +80,12 @@ Profile::Profile(std::span<const Point2> input) {
   checkScale();
 
   if (auto pair = detail::findSelfIntersection(points_)) {
+    const SourceIndices sourceIndex = this->sourceIndex();
     const auto describeSegment = [&](std::size_t k) {
-      return "the segment from " + describePoint(sourceIndex_[k], points_[k]) + " to " +
-             describePoint(sourceIndex_[k + 1], points_[k + 1]);
+      return "the segment from " + describePoint(sourceIndex[k], points_[k]) + " to " +
+             describePoint(sourceIndex[k + 1], points_[k + 1]);
     };
-    throw ProfileError(ProfileError::Rule::selfIntersecting, sourceIndex_[pair->first],
+    throw ProfileError(ProfileError::Rule::selfIntersecting, sourceIndex[pair->first],
                        describeSegment(pair->first) + " and " + describeSegment(pair->second) +
                            " intersect; a profile must not cross or touch itself");
   }
@@ -97,9 +104,6 @@ Profile::Profile(std::span<const Point2> input) {
 namespace revolve {
 
 Profile::Profile(Unchecked, std::vector<Point2> points, std::vector<double> arcLength, bool closed)
-    : points_(std::move(points)), arcLength_(std::move(arcLength)), closed_(closed) {
-  sourceIndex_.resize(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i) sourceIndex_[i] = i;
-}
+    : points_(std::move(points)), arcLength_(std::move(arcLength)), closed_(closed) {}
 
 }  // namespace revolve

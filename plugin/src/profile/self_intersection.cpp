@@ -287,11 +287,35 @@ class SelfIntersectionSweep {
   return true;
 }
 
+// Whether the polyline is monotone along one axis (never turning back along it) and never runs
+// across that axis twice in a row: such a polyline is simple, decided with comparisons alone. Two
+// segments i < j - 1 span ranges of the axis that meet only if every segment between them runs
+// across it at one height h, i.e. j = i + 2 with segment i + 1 the single run; then segments i and
+// j cross h only at their ends p[i + 1] and p[i + 2], which differ. Neighbours share their vertex
+// and lie on opposite sides of it along the axis (or one runs across it), so they cannot fold back;
+// the ends cannot meet (that needs the whole polyline at one height). Most profiles (a vase, a
+// bottle: z up from the base) take this path and skip the sweep's sort, tree and predicates.
+bool monotoneWithSingleRuns(std::span<const Point2> points, double Point2::*axis) {
+  const double first = points.front().*axis, last = points.back().*axis;
+  if (first == last) return false;
+  const bool ascending = first < last;
+  bool previousRun = false;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const double from = points[i - 1].*axis, to = points[i].*axis;
+    if (ascending ? to < from : to > from) return false;
+    const bool run = to == from;
+    if (run && previousRun) return false;
+    previousRun = run;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<SegmentPair> findSelfIntersection(std::span<const Point2> points) {
   assert(meetsPrecondition(points));
   if (points.size() < 3) return std::nullopt;  // at most one segment
+  if (monotoneWithSingleRuns(points, &Point2::z) || monotoneWithSingleRuns(points, &Point2::r)) return std::nullopt;
   return SelfIntersectionSweep(points).run();
 }
 

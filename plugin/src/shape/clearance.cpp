@@ -108,7 +108,7 @@ class ClearanceSearch {
 
   void run() {
     detail::searchBestFirst(
-        shape_.mibit, shape_.local,
+        shape_.mibit, detail::localPointsOf(shape_),
         [&](double rMin, double rMax, double zLow, double zHigh) { return scaledBoxBound(rMin, rMax, zLow, zHigh); },
         [&](double bound) { return bound >= best_.value; }, [&](std::uint32_t k) { visit(k); });
   }
@@ -117,7 +117,10 @@ class ClearanceSearch {
   std::uint32_t segment() const { return segment_; }
 
  private:
-  Point2 scaled(std::uint32_t k) const { return {shape_.local[k].r * radial_, shape_.local[k].z * axial_}; }
+  Point2 scaled(std::uint32_t k) const {
+    const Point2 p = detail::localPointsOf(shape_)[k];
+    return {p.r * radial_, p.z * axial_};
+  }
 
   double scaledBoxBound(double rMin, double rMax, double zLow, double zHigh) const {
     const double za = zLow * axial_, zb = zHigh * axial_;

@@ -27,7 +27,7 @@ class ClosestSegment {
 
   void search() {
     detail::searchBestFirst(
-        shape_.mibit, shape_.local,
+        shape_.mibit, detail::localPointsOf(shape_),
         [&](double rMin, double rMax, double zLow, double zHigh) {
           return boxDistance2(rMin, rMax, zLow, zHigh, rho_, z_);
         },
@@ -46,7 +46,8 @@ class ClosestSegment {
       if (m.value * m.value < best2_) best2_ = m.value * m.value, segment_ = k, point_ = {m.r, m.z};
       return;
     }
-    const Point2 a = shape_.local[k], b = shape_.local[k + 1];
+    const detail::LocalPoints local = detail::localPointsOf(shape_);
+    const Point2 a = local[k], b = local[k + 1];
     const double er = b.r - a.r, ez = b.z - a.z;
     const double along = std::clamp(((rho_ - a.r) * er + (z_ - a.z) * ez) / (er * er + ez * ez), 0.0, 1.0);
     const Point2 q{a.r + along * er, a.z + along * ez};

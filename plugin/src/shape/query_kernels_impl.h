@@ -42,7 +42,7 @@ bool anyHit(const detail::ShapeImpl& shape, const Ray& ray, Stats& stats) noexce
 // or a ray not exactly the one traced, the hit of the segment whose t is nearest.
 template <bool kCurve>
 std::optional<Hit> hitOnLeaf(const detail::ShapeImpl& shape, const Ray& ray, std::uint32_t k, float t) noexcept {
-  const std::size_t leaves = kCurve ? shape.parts.size() : shape.local.size() - 1;
+  const std::size_t leaves = kCurve ? shape.parts.size() : shape.profile.segmentCount();
   MeridianRay meridian;
   if (k >= leaves || !setUpMeridianRay(shape.frame, ray, meridian)) return std::nullopt;
   Stats unused;

@@ -28,17 +28,18 @@ Bounds paddedBounds(double rMax, double zMin, double zMax) {
 }
 
 // The search structures over the local points (a polyline's, or a spline's monotone parts' ends).
-void buildSearch(detail::ShapeImpl& impl, const BuildOptions& options, std::span<const Point2> innerControls) {
-  impl.mibit = detail::buildMibitTree(impl.local, options, innerControls);
+void buildSearch(detail::ShapeImpl& impl, std::span<const Point2> local, const BuildOptions& options,
+                 std::span<const Point2> innerControls) {
+  impl.mibit = detail::buildMibitTree(local, options, innerControls);
   // The wide layout serves the default MIBIT only: cylinder shells, monotone split, range search and
   // the finest refinement; the paper's other variants keep their binary tree for its comparisons.
   // Its float filter needs R^2 well inside float's range (mibit/wide_search.h).
   const double R = impl.frame.sphereRadius;
   if (options.method == Method::mibit && options.wideNodes && options.shell == ShellKind::cylinder &&
       options.monotoneSplit && options.rangeSearch && options.subdivisions == 0 && R >= 0x1p-50 && R <= 0x1p50) {
-    impl.wide = detail::buildWideTree(impl.local, impl.mibit.intervals, impl.frame);
+    impl.wide = detail::buildWideTree(local, impl.mibit.intervals, impl.frame);
   }
-  if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(impl.local);
+  if (options.method == Method::kajiya) impl.strips = detail::buildStripTree(local);
   // Each array at its size: the trees grow theirs level by level, and a scene of a million shapes
   // pays for every element of slack.
   impl.mibit.nodes.shrink_to_fit();
@@ -92,26 +93,19 @@ Shape::Shape(Profile profile, const BuildOptions& options)
     rMax = std::max(rMax, p.r);
   }
   const double zCentre = 0.5 * zMin + 0.5 * zMax;  // halves first: no overflow near the double range
-  impl.local.reserve(points.size());
+  // The builders' copy of the points in the local frame; the shape reads its profile's through
+  // localPointsOf, which gives the same doubles.
+  std::vector<Point2> local;
+  local.reserve(points.size());
   double radius = 0.0;
   for (const Point2& p : points) {
-    impl.local.push_back({p.r, p.z - zCentre});
-    radius = std::max(radius, std::hypot(p.r, impl.local.back().z));
+    local.push_back({p.r, p.z - zCentre});
+    radius = std::max(radius, std::hypot(p.r, local.back().z));
   }
   // The farthest surface point from the centre is a vertex (distance is convex along a segment).
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
 
-  const std::span<const double> arc = impl.profile.arcLength();
-  impl.segments.reserve(points.size() - 1);
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    const double er = points[k + 1].r - points[k].r, ez = points[k + 1].z - points[k].z;
-    const double length2 = er * er + ez * ez;  // magnitudes within 2^+-60: no overflow, no underflow
-    const double length = std::sqrt(length2);
-    impl.segments.push_back(
-        {ez / length, -er / length, 1.0 / length2, arc[k] / arc.back(), (arc[k + 1] - arc[k]) / arc.back()});
-  }
-
-  buildSearch(impl, options, {});
+  buildSearch(impl, local, options, {});
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
 
@@ -201,14 +195,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   impl.local = std::move(knots);
   impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
-  impl.segments.reserve(impl.parts.size());
-  for (std::size_t k = 0; k < impl.parts.size(); ++k) {
-    // The chord's frame: what a straight part's hit needs (as a segment's); v from the curve's length.
-    const Point2 a = impl.local[k], b = impl.local[k + 1];
-    const double er = b.r - a.r, ez = b.z - a.z, length2 = er * er + ez * ez, length = std::sqrt(length2);
-    impl.segments.push_back({ez / length, -er / length, 1.0 / length2, v0[k], dv[k]});
-  }
-  buildSearch(impl, options, inner);
+  buildSearch(impl, impl.local, options, inner);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
 
@@ -250,13 +237,13 @@ std::size_t Shape::treeNodeCount() const noexcept {
 std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
   return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
-         impl.segments.capacity() * sizeof(detail::SegmentFrame) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
          impl.parts.capacity() * sizeof(detail::CurvePart) + (impl.curve ? impl.curve->memoryBytes() : 0) +
-         impl.profile.points().size() * (sizeof(Point2) + sizeof(double) + sizeof(std::size_t));
+         impl.profile.points().size() * (sizeof(Point2) + sizeof(double)) +
+         (impl.profile.sourceIndex().identity() ? 0 : impl.profile.points().size() * sizeof(std::size_t));
 }
 
 std::size_t detail::SplineData::memoryBytes() const noexcept {

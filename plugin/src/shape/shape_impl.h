@@ -6,6 +6,7 @@
 
 #include "kajiya/strip_tree.h"
 #include "kernel/curve_hits.h"
+#include "kernel/local_points.h"
 #include "kernel/meridian_ray.h"
 #include "mibit/mibit_tree.h"
 #include "mibit/wide_tree.h"
@@ -13,13 +14,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace revolve {
 namespace detail {
 
-// What a hit's attributes need of its segment, computed once: no square root or division is left
-// for the hit itself but the azimuth's.
+// What a hit's attributes need of its segment, computed per hit from the points and arc lengths
+// (surface_hit.h): a square root and five divisions a hit cost less than 40 bytes a segment kept.
 struct SegmentFrame {
   double nr, nz;      // the unit normal in the meridian plane, right of the direction of travel
   double invLength2;  // 1 / |p1 - p0|^2
@@ -46,13 +48,22 @@ struct ShapeImpl {
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   ShapeFrame frame;
-  std::vector<Point2> local;           // profile points in the local frame (z - frame.zCentre)
-  std::vector<SegmentFrame> segments;  // one per segment
-  MibitTree mibit;                     // always built: it also serves closest-point queries and in-plane rays
-  WideTree wide;                       // the SIMD layout, for the default options (BuildOptions::wideNodes)
-  StripTree strips;                    // built for Method::kajiya only
+  std::vector<Point2> local;  // a spline shape's knots in the local frame; a polyline's: localPointsOf
+  MibitTree mibit;            // always built: it also serves closest-point queries and in-plane rays
+  WideTree wide;              // the SIMD layout, for the default options (BuildOptions::wideNodes)
+  StripTree strips;           // built for Method::kajiya only
   Bounds bounds;
 };
+
+inline namespace REVOLVE_ISA {
+// The shape's points in its local frame: a polyline's profile points shifted as they are read (the
+// same doubles a stored copy would hold), a spline's knots as kept.
+inline LocalPoints localPointsOf(const ShapeImpl& shape) noexcept {
+  if (shape.curved()) return {shape.local.data(), shape.local.size(), 0.0};
+  const std::span<const Point2> points = shape.profile.points();
+  return {points.data(), points.size(), shape.frame.zCentre};
+}
+}  // namespace REVOLVE_ISA
 
 }  // namespace detail
 }  // namespace revolve

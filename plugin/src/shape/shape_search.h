@@ -28,14 +28,14 @@ inline void searchShape(const detail::ShapeImpl& shape, const MeridianRay& ray, 
       if (!shape.wide.empty() && !ray.inPlane && wideSearchServes(ray)) {
         searchWide<kCount>(shape.wide, ray, shape.frame.sphereRadius, hi, visit, stats);
       } else {
-        searchMibit<kCount>(shape.mibit, shape.local, shape.options.rangeSearch, ray, hi, visit, stats);
+        searchMibit<kCount>(shape.mibit, localPointsOf(shape), shape.options.rangeSearch, ray, hi, visit, stats);
       }
       break;
     case Method::kajiya:
       searchStripTree<kCount>(shape.strips, ray, hi, visit, stats);
       break;
     case Method::linear: {
-      const auto segments = static_cast<std::uint32_t>(shape.local.size() - 1);
+      const auto segments = static_cast<std::uint32_t>(shape.profile.segmentCount());
       for (std::uint32_t k = 0; k < segments; ++k) {
         if (visit(k)) return;
       }
@@ -47,7 +47,8 @@ inline void searchShape(const detail::ShapeImpl& shape, const MeridianRay& ray, 
 template <bool kCount, bool kFirstOnly = false>
 inline SegmentHits hitsOfSegment(const detail::ShapeImpl& shape, const MeridianRay& ray, std::uint32_t k, double hi,
                                  Stats& stats) noexcept {
-  const SegmentHits hits = segmentHits<kFirstOnly>(ray, shape.local[k], shape.local[k + 1], ray.lo, hi);
+  const LocalPoints local = localPointsOf(shape);
+  const SegmentHits hits = segmentHits<kFirstOnly>(ray, local[k], local[k + 1], ray.lo, hi);
   if constexpr (kCount) stats.quadratics += hits.solved;
   return hits;
 }

@@ -29,18 +29,41 @@ inline float callerT(const MeridianRay& ray, const Ray& caller, double s) noexce
 // same bit for bit whatever else is (each attribute is its own chain of operations).
 inline constexpr unsigned kNormalAttribute = 1, kUvAttribute = 2, kAllAttributes = 3;
 
-template <unsigned kAttributes = kAllAttributes>
+// Segment k's frame, from what it is measured on: a polyline's own points and arc lengths, or the
+// chord between a spline part's local knots and the part's v. Each value is one chain of operations
+// on the stored values, so every copy (and surfaceHitLanes) computes it bit for bit alike.
+template <bool kCurve>
+inline SegmentFrame segmentFrameOf(const detail::ShapeImpl& shape, std::uint32_t k) noexcept {
+  double er, ez, v0, dv;
+  if constexpr (kCurve) {
+    const Point2 a = shape.local[k], b = shape.local[k + 1];
+    er = b.r - a.r, ez = b.z - a.z;
+    v0 = shape.parts[k].v0, dv = shape.parts[k].dv;
+  } else {
+    const Point2* p = shape.profile.points().data();
+    const double* arc = shape.profile.arcLength().data();
+    const double total = arc[shape.profile.segmentCount()];
+    er = p[k + 1].r - p[k].r, ez = p[k + 1].z - p[k].z;
+    v0 = arc[k] / total, dv = (arc[k + 1] - arc[k]) / total;
+  }
+  const double length2 = er * er + ez * ez;  // magnitudes within 2^+-60: no overflow, no underflow
+  const double length = std::sqrt(length2);
+  return {ez / length, -er / length, 1.0 / length2, v0, dv};
+}
+
+template <unsigned kAttributes = kAllAttributes, bool kCurve = false>
 inline Hit surfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                       std::uint32_t k) noexcept {
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
-  const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
-  const SegmentFrame& frame = shape.segments[k];
+  const LocalPoints local = localPointsOf(shape);
+  const Point2 p0 = local[k], p1 = local[k + 1];
 
   Hit hit{};
   hit.t = callerT(ray, caller, s);
   hit.point = {float(px), float(py), float(pz + shape.frame.zCentre)};
   hit.segment = k;
   if constexpr (kAttributes == 0) return hit;
+  const SegmentFrame frame = segmentFrameOf<kCurve>(shape, k);
   const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
   if constexpr ((kAttributes & kNormalAttribute) != 0) {
     // + 0.0f turns -0 into +0, so that printed normals never read "-0".
@@ -60,7 +83,7 @@ template <unsigned kAttributes = kAllAttributes>
 inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ray, const Ray& caller, double s,
                            std::uint32_t k, double u) noexcept {
   const CurvePart& part = shape.parts[k];
-  if (part.straight) return surfaceHit<kAttributes>(shape, ray, caller, s, k);
+  if (part.straight) return surfaceHit<kAttributes, true>(shape, ray, caller, s, k);
   const double px = ray.ox + s * ray.dx, py = ray.oy + s * ray.dy, pz = ray.zAt(s);
   Hit hit{};
   hit.t = callerT(ray, caller, s);
@@ -117,19 +140,20 @@ struct HitAttributes {
 
 template <unsigned kAttributes = kAllAttributes>
 inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& in, HitAttributes& out) noexcept {
-  alignas(32) double f[17][kLanes];  // gathered: ray, segment and caller, lane by lane
+  // Gathered lane by lane: ray, local segment, the segment's own (global) rise, its arc lengths.
+  alignas(32) double f[16][kLanes];
+  const Point2* points = shape.profile.points().data();
+  const double* arc = shape.profile.arcLength().data();
+  const LocalPoints local = localPointsOf(shape);
   for (int lane = 0; lane < kLanes; ++lane) {
     const MeridianRay& ray = *in.ray[lane];
     const std::uint32_t k = in.segment[lane];
-    const Point2 p0 = shape.local[k], p1 = shape.local[k + 1];
-    const SegmentFrame& frame = shape.segments[k];
-    const double values[17] = {ray.ox,     ray.oy,           ray.oz,  ray.dx, ray.dy, ray.dz, ray.t0,
-                               ray.tScale, in.s[lane],       p0.r,    p0.z,   p1.r,   p1.z,   frame.nr,
-                               frame.nz,   frame.invLength2, frame.v0};
-    for (int i = 0; i < 17; ++i) f[i][lane] = values[i];
+    const Point2 p0 = local[k], p1 = local[k + 1];
+    const double values[16] = {ray.ox,     ray.oy,     ray.oz, ray.dx, ray.dy, ray.dz, ray.t0,
+                               ray.tScale, in.s[lane], p0.r,   p0.z,   p1.r,   p1.z,   points[k + 1].z - points[k].z,
+                               arc[k],     arc[k + 1]};
+    for (int i = 0; i < 16; ++i) f[i][lane] = values[i];
   }
-  alignas(32) double dv[kLanes];
-  for (int lane = 0; lane < kLanes; ++lane) dv[lane] = shape.segments[in.segment[lane]].dv;
   const Lanes s = load(f[8]);
   storeFloats(out.t, load(f[6]) + s / load(f[7]));
   for (int lane = 0; lane < kLanes; ++lane) out.t[lane] = std::clamp(out.t[lane], in.tnear[lane], in.tfar[lane]);
@@ -139,19 +163,25 @@ inline unsigned surfaceHitLanes(const detail::ShapeImpl& shape, const HitLanes& 
   const unsigned scaled =
       bits(rho2 < splat(std::numeric_limits<double>::min() / std::numeric_limits<double>::epsilon()));
   const Lanes rho = sqrt(rho2);
+  // segmentFrameOf's operations, lane by lane (r is the same in either frame).
+  const Lanes er = load(f[11]) - load(f[9]), ez = load(f[13]);
+  const Lanes length2 = er * er + ez * ez;
   if constexpr ((kAttributes & kNormalAttribute) != 0) {
     const Lanes cosPhi = px / rho, sinPhi = py / rho;
-    const Lanes nr = load(f[13]);
+    const Lanes length = sqrt(length2);
+    const Lanes nr = ez / length;
     storeFloats(out.nx, nr * cosPhi);
     storeFloats(out.ny, nr * sinPhi);
-    storeFloats(out.nz, load(f[14]));
+    storeFloats(out.nz, -er / length);
     for (int lane = 0; lane < kLanes; ++lane) out.nx[lane] += 0.0f, out.ny[lane] += 0.0f, out.nz[lane] += 0.0f;
   }
   if constexpr ((kAttributes & kUvAttribute) != 0) {
     azimuthFractions(px, py, out.u);
     const Lanes r0 = load(f[9]), z0 = load(f[10]);
-    const Lanes along = ((rho - r0) * (load(f[11]) - r0) + (pz - z0) * (load(f[12]) - z0)) * load(f[15]);
-    storeFloats(out.v, load(f[16]) + minOf(maxOf(along, splat(0.0)), splat(1.0)) * load(dv));
+    const Lanes along = ((rho - r0) * (load(f[11]) - r0) + (pz - z0) * (load(f[12]) - z0)) * (splat(1.0) / length2);
+    const Lanes total = splat(arc[shape.profile.segmentCount()]), arc0 = load(f[14]);
+    const Lanes v0 = arc0 / total, dv = (load(f[15]) - arc0) / total;
+    storeFloats(out.v, v0 + minOf(maxOf(along, splat(0.0)), splat(1.0)) * dv);
   }
   return scaled;
 }
