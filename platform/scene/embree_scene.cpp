@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -92,28 +93,34 @@ ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
 
 // One profile built into Embree, whichever objects show it.
 struct EmbreeScene::Prototype {
-  std::optional<Shape> shape;                 // traced exactly
-  std::optional<Profile> profile;             // the polyline of a mesh or cone curve (and a scene file's profile)
-  std::optional<ShadingNormals> normals;      // a scene file's profiles: smooth shading
-  std::optional<revolve::Geometry> geometry;  // the exact surface in Embree
+  std::optional<Shape> shape;             // traced exactly
+  std::optional<Profile> profile;         // the polyline of a mesh or cone curve (and a scene file's profile)
+  std::optional<ShadingNormals> normals;  // a scene file's profiles: smooth shading
   std::optional<ConeCurveGeometry> cone;
   RTCGeometry mesh = nullptr;  // retained while the prototype lives
   const float* meshVertices = nullptr;
   const std::uint32_t* meshIndices = nullptr;
   std::uint32_t slices = 0;
-  app::Scene scene;  // the one-geometry scene instances show; none for a geometry attached directly
-  // filteredScene(): the same surface again with the filter, and its scene.
-  std::optional<revolve::Geometry> filtered;
-  app::Scene filteredScene;
+  // A mesh's or cone curve's scene, which its objects instance. An exact surface has none: each of
+  // its objects is a placed revolve::Geometry of its own (Instance::exact).
+  app::Scene scene;
 
-  // A scene file's profile, as `settings` build it, in a scene of its own. An exact surface keeps
-  // no copy of the polyline (its shape holds it), and an exact spline no shading normals (its
-  // geometric normal is smooth already): a scene of a million objects pays for neither.
-  Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings)
-      : scene(app::newScene(device)) {
+  // A scene file's profile, as `settings` build it. An exact surface keeps no copy of the polyline
+  // (its shape holds it), and an exact spline no shading normals (its geometric normal is smooth
+  // already): a scene of a million objects pays for neither.
+  Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings) {
     const bool exact = !settings.mesh && !settings.embreeCone;
     if (!exact) profile.emplace(source.profile);
     if (!exact || !source.spline) normals.emplace(shadingNormalsOf(source));
+    if (exact) {
+      if (source.spline) {
+        shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
+      } else {
+        shape.emplace(source.profile, settings.options);
+      }
+      return;
+    }
+    scene = app::newScene(device);
     if (settings.mesh) {
       slices = settings.slices;
       mesh = newTessellatedGeometry(device, *profile, slices);
@@ -121,28 +128,14 @@ struct EmbreeScene::Prototype {
       meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_INDEX, 0));
       if (meshVertices == nullptr || meshIndices == nullptr) throw std::runtime_error("Embree gave no mesh buffers");
       rtcAttachGeometry(scene.get(), mesh);
-    } else if (settings.embreeCone) {
+    } else {
       cone.emplace(device, *profile);
       rtcAttachGeometry(scene.get(), cone->handle());
-    } else if (source.spline) {
-      shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
-      geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
-      rtcAttachGeometry(scene.get(), geometry->handle());
-    } else {
-      shape.emplace(source.profile, settings.options);
-      geometry.emplace(device, *shape, revolve::Geometry::Options{.countStats = settings.countStats});
-      rtcAttachGeometry(scene.get(), geometry->handle());
     }
     rtcCommitScene(scene.get());
   }
-  // A shape traced exactly, in a scene of its own when it is to be instanced.
-  Prototype(Shape traced, RTCDevice device, bool instanced) : shape(std::move(traced)) {
-    geometry.emplace(device, *shape);
-    if (!instanced) return;
-    scene = app::newScene(device);
-    rtcAttachGeometry(scene.get(), geometry->handle());
-    rtcCommitScene(scene.get());
-  }
+  // A shape traced exactly.
+  explicit Prototype(Shape traced) : shape(std::move(traced)) {}
   ~Prototype() {
     if (mesh != nullptr) rtcReleaseGeometry(mesh);
   }
@@ -158,16 +151,22 @@ struct EmbreeScene::Instance {
   std::uint32_t id = 0, prototype = 0, material = 0;
   float reflectivity = 1;
   app::Placement placement;
-  bool attachedDirectly = false;  // the identity, attached to the top scene itself
+  // An exact surface: its shape as an Embree geometry placed where the object is (unplaced for the
+  // identity), attached to the top scene under the object's id; and the same again with
+  // filteredScene()'s filter. An Embree instance of a one-geometry scene would cost each object
+  // about 4 KB and each ray a second traversal.
+  std::optional<revolve::Geometry> exact, filtered;
+  bool worldNormals = false;  // the identity: hits' normals are the world's already
   // What a hit needs of the placement, as Embree holds it: the linear part rounded to float, the
   // inverse transpose of that for normals, the translation in float.
   app::Matrix3d linear{}, normalMatrix{};
   std::array<float, 9> rangeNormalMatrix{};  // normalMatrix rounded to float, row by row: a range hit's normal
   Vec3 translate{};
-  // Embree maps the world ray into object space in float: o' = L^-1 (o - T), d' = L^-1 d, each
-  // component within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d|. Mapped back through L, the
-  // exact hit of that ray lies within gamma(3) |L| |L^-1| (|o| + |T| + |t d|) of the world ray's
-  // (infinity norms); this is that factor, gamma(3) |L| |L^-1|, with room (gamma(4)).
+  // The world ray is mapped into object space: o' = L^-1 (o - T), d' = L^-1 d, each component
+  // within gamma(3) of |L^-1| (|o| + |T|) and |L^-1| |d| (as Embree's instance maps it in float;
+  // revolve::Geometry's placement maps it in double and rounds once, well within that). Mapped back
+  // through L, the exact hit of that ray lies within gamma(3) |L| |L^-1| (|o| + |T| + |t d|) of the
+  // world ray's (infinity norms); this is that factor, gamma(3) |L| |L^-1|, with room (gamma(4)).
   float transformErrorFactor = 0;
 };
 
@@ -195,6 +194,7 @@ EmbreeScene::EmbreeScene(const Layout& layout) : EmbreeScene(layout, false) {}
 EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSettings& settings)
     : EmbreeScene(Layout{}, settings.embreeCone) {
   const auto start = std::chrono::steady_clock::now();
+  countStats_ = settings.countStats;
   const auto objectName = [&](std::size_t i) {
     const io::SceneObject& object = description.objects[i];
     return description.file + ": objects[" + std::to_string(i) + "]" +
@@ -256,19 +256,29 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     prototypes_[i] = std::make_unique<Prototype>(description.profiles[used[i]], device_.get(), settings);
   });
 
-  instances_.reserve(description.objects.size());
-  for (std::size_t i = 0; i < description.objects.size(); ++i) {
+  // The objects' records and Embree geometries made in parallel, then attached in order; of
+  // objects that cannot be placed, the first is named.
+  instances_.resize(description.objects.size());
+  std::vector<std::exception_ptr> faults(description.objects.size());
+  tbb::parallel_for(std::size_t{0}, description.objects.size(), [&](std::size_t i) {
     const io::SceneObject& object = description.objects[i];
-    std::optional<app::Placement> placement;
     try {
       // The reader holds transforms to the placement rule; held again here for descriptions made in code.
-      placement.emplace(object.transform);
+      const app::Placement placement(object.transform);
+      instances_[i] = newInstance(std::uint32_t(i), std::uint32_t(prototypeOf[object.profile]), placement,
+                                  std::uint32_t(object.material), float(object.reflectivity));
     } catch (const app::PlacementError& error) {
-      throw std::runtime_error(objectName(i) + ": " + error.what());
+      faults[i] = std::make_exception_ptr(std::runtime_error(objectName(i) + ": " + error.what()));
+    } catch (...) {
+      faults[i] = std::current_exception();
     }
-    addInstance(std::uint32_t(prototypeOf[object.profile]), *placement, std::uint32_t(object.material),
-                float(object.reflectivity));
+  });
+  for (const std::exception_ptr& fault : faults) {
+    if (fault) std::rethrow_exception(fault);
   }
+  faults = {};
+  geometries_.reserve(description.objects.size() + (description.quads.empty() ? 0 : 1));
+  for (std::size_t i = 0; i < description.objects.size(); ++i) attach(i);
 
   if (!description.quads.empty()) {
     TriangleMesh quads;
@@ -298,8 +308,7 @@ EmbreeScene::~EmbreeScene() {
 std::uint32_t EmbreeScene::addRevolution(Shape shape, const app::Placement& placement, std::uint32_t material) {
   if (geometries_.size() >= RTC_INVALID_GEOMETRY_ID)
     throw std::length_error("a scene holds at most 2^32 - 1 geometries");
-  const bool direct = layout_.identityUninstanced && placement.isIdentity();
-  prototypes_.push_back(std::make_unique<Prototype>(std::move(shape), device_.get(), !direct));
+  prototypes_.push_back(std::make_unique<Prototype>(std::move(shape)));
   return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
 }
 
@@ -308,25 +317,36 @@ std::uint32_t EmbreeScene::addRevolutions(std::vector<Shape> shapes, std::span<c
   if (geometries_.size() + shapes.size() >= RTC_INVALID_GEOMETRY_ID)
     throw std::length_error("a scene holds at most 2^32 - 1 geometries");
   const std::size_t first = prototypes_.size();
-  prototypes_.resize(first + shapes.size());
+  prototypes_.reserve(first + shapes.size());
+  for (Shape& shape : shapes) prototypes_.push_back(std::make_unique<Prototype>(std::move(shape)));
+  const auto firstId = std::uint32_t(geometries_.size());
+  // The objects' records and Embree geometries made in parallel, then attached in order.
+  const std::size_t firstInstance = instances_.size();
   try {
+    instances_.resize(firstInstance + shapes.size());
     tbb::parallel_for(std::size_t{0}, shapes.size(), [&](std::size_t i) {
-      const bool direct = layout_.identityUninstanced && placements[i].isIdentity();
-      prototypes_[first + i] = std::make_unique<Prototype>(std::move(shapes[i]), device_.get(), !direct);
+      instances_[firstInstance + i] =
+          newInstance(firstId + std::uint32_t(i), std::uint32_t(first + i), placements[i], 0, 1);
     });
   } catch (...) {
-    prototypes_.resize(first);  // nothing added
+    instances_.resize(firstInstance);  // nothing added
+    prototypes_.resize(first);
     throw;
   }
-  const auto firstId = std::uint32_t(geometries_.size());
-  instances_.reserve(instances_.size() + shapes.size());
-  for (std::size_t i = 0; i < shapes.size(); ++i) addInstance(std::uint32_t(first + i), placements[i], 0);
+  geometries_.reserve(geometries_.size() + shapes.size());
+  for (std::size_t i = 0; i < shapes.size(); ++i) attach(firstInstance + i);
   return firstId;
 }
 
 std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material,
                                        float reflectivity) {
-  const auto id = std::uint32_t(geometries_.size());
+  instances_.push_back(newInstance(std::uint32_t(geometries_.size()), prototype, placement, material, reflectivity));
+  return attach(instances_.size() - 1);
+}
+
+EmbreeScene::Instance EmbreeScene::newInstance(std::uint32_t id, std::uint32_t prototype,
+                                               const app::Placement& placement, std::uint32_t material,
+                                               float reflectivity) const {
   Instance instance;
   instance.id = id;
   instance.prototype = prototype;
@@ -343,20 +363,28 @@ std::uint32_t EmbreeScene::addInstance(std::uint32_t prototype, const app::Place
   instance.translate = {float(t[0]), float(t[1]), float(t[2])};
   instance.transformErrorFactor = float(gamma(4) * instance.linear.infinityNorm() * inv.infinityNorm());
   const Prototype& built = *prototypes_[prototype];
-  if (!built.scene) {
-    instance.attachedDirectly = true;
-    rtcAttachGeometryByID(top_.get(), built.geometry->handle(), id);
+  if (built.shape) {
+    instance.worldNormals = placement.isIdentity();
+    instance.exact = exactGeometry(*built.shape, instance);
+  }
+  return instance;
+}
+
+std::uint32_t EmbreeScene::attach(std::size_t index) {
+  const Instance& instance = instances_[index];
+  const std::uint32_t id = instance.id;
+  if (instance.exact) {
+    rtcAttachGeometryByID(top_.get(), instance.exact->handle(), id);
   } else {
     RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geometry, built.scene.get());
-    const std::array<float, 12> columns = placement.embreeColumns();
+    rtcSetGeometryInstancedScene(geometry, prototypes_[instance.prototype]->scene.get());
+    const std::array<float, 12> columns = instance.placement.embreeColumns();
     rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(top_.get(), geometry, id);
     rtcReleaseGeometry(geometry);
   }
-  geometries_.push_back({false, std::uint32_t(instances_.size())});
-  instances_.push_back(std::move(instance));
+  geometries_.push_back({false, std::uint32_t(index)});
   filteredCurrent_ = false;
   return id;
 }
@@ -421,9 +449,22 @@ const TriangleMesh* EmbreeScene::meshOf(std::uint32_t id) const noexcept {
   return g.mesh ? &meshes_[g.index] : nullptr;
 }
 
-bool EmbreeScene::uninstanced(std::uint32_t id) const noexcept {
+bool EmbreeScene::worldNormals(std::uint32_t id) const noexcept {
   const Geometry& g = geometries_[id];
-  return g.mesh || instances_[g.index].attachedDirectly;
+  return g.mesh || instances_[g.index].worldNormals;
+}
+
+revolve::Geometry EmbreeScene::exactGeometry(const Shape& shape, const Instance& instance) const {
+  const revolve::Geometry::Options options{.countStats = countStats_};
+  if (instance.placement.isIdentity()) return revolve::Geometry(device_.get(), shape, options);
+  // The linear part as the instance's records hold it (rounded to float, as an Embree instance
+  // would hold it), so that the hit's normal and error bound (instanceHit) are of the same map.
+  revolve::Placement placement;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) placement.linear[r][c] = instance.linear.m[r][c];
+    placement.translate[r] = (&instance.translate.x)[r];
+  }
+  return revolve::Geometry(device_.get(), shape, placement, options);
 }
 
 RTCScene EmbreeScene::filteredScene(RTCFilterFunctionN filter) {
@@ -440,30 +481,15 @@ RTCScene EmbreeScene::filteredScene(RTCFilterFunctionN filter) {
       rtcReleaseGeometry(geometry);
       continue;
     }
-    const Instance& instance = instances_[g.index];
-    Prototype& prototype = *prototypes_[instance.prototype];
+    Instance& instance = instances_[g.index];
+    const Prototype& prototype = *prototypes_[instance.prototype];
     if (!prototype.shape) throw std::logic_error("filteredScene: only surfaces traced exactly carry filters");
-    if (!prototype.filtered) {
-      prototype.filtered.emplace(device_.get(), *prototype.shape);
-      prototype.filtered->setIntersectFilter(filter);
-      rtcCommitGeometry(prototype.filtered->handle());
+    if (!instance.filtered) {
+      instance.filtered = exactGeometry(*prototype.shape, instance);
+      instance.filtered->setIntersectFilter(filter);
+      rtcCommitGeometry(instance.filtered->handle());
     }
-    if (instance.attachedDirectly) {
-      rtcAttachGeometryByID(scene.get(), prototype.filtered->handle(), id);
-      continue;
-    }
-    if (!prototype.filteredScene) {
-      prototype.filteredScene = app::newScene(device_.get());
-      rtcAttachGeometry(prototype.filteredScene.get(), prototype.filtered->handle());
-      rtcCommitScene(prototype.filteredScene.get());
-    }
-    RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geometry, prototype.filteredScene.get());
-    const std::array<float, 12> columns = instance.placement.embreeColumns();
-    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(scene.get(), geometry, id);
-    rtcReleaseGeometry(geometry);
+    rtcAttachGeometryByID(scene.get(), instance.filtered->handle(), id);
   }
   rtcCommitScene(scene.get());
   if (rtcGetDeviceError(device_.get()) != RTC_ERROR_NONE) throw std::runtime_error("Embree failed to build the scene");
@@ -494,7 +520,7 @@ RangeHit EmbreeScene::rangeHitOf(const RTCHit& hit, float t) const noexcept {
     if (!mesh.quadReflectivities.empty()) range.reflectivity = mesh.quadReflectivities[hit.primID / 2];
   } else {
     const Instance& instance = instances_[g.index];
-    if (!instance.attachedDirectly) {
+    if (!instance.worldNormals) {
       const std::array<float, 9>& m = instance.rangeNormalMatrix;
       n = {m[0] * n.x + m[1] * n.y + m[2] * n.z, m[3] * n.x + m[4] * n.y + m[5] * n.z,
            m[6] * n.x + m[7] * n.y + m[8] * n.z};
@@ -720,8 +746,8 @@ std::size_t EmbreeScene::meshBytes() const noexcept {
 
 Stats EmbreeScene::stats() const noexcept {
   Stats total;
-  for (const auto& prototype : prototypes_) {
-    if (prototype->geometry) total += prototype->geometry->stats();
+  for (const Instance& instance : instances_) {
+    if (instance.exact) total += instance.exact->stats();
   }
   return total;
 }
@@ -745,8 +771,14 @@ std::size_t EmbreeScene::revolveBytes() const noexcept {
 }
 
 std::size_t EmbreeScene::recordBytes() const noexcept {
+  std::size_t geometryBytes = 0;  // what revolve keeps beside each exact surface's Embree geometry
+  for (const Instance& instance : instances_) {
+    if (instance.exact) geometryBytes += instance.exact->memoryBytes();
+    if (instance.filtered) geometryBytes += instance.filtered->memoryBytes();
+  }
   return instances_.capacity() * sizeof(Instance) + geometries_.capacity() * sizeof(Geometry) +
-         prototypes_.capacity() * sizeof(std::unique_ptr<Prototype>) + prototypes_.size() * sizeof(Prototype);
+         prototypes_.capacity() * sizeof(std::unique_ptr<Prototype>) + prototypes_.size() * sizeof(Prototype) +
+         geometryBytes;
 }
 
 std::int64_t EmbreeScene::embreeBytes() const noexcept { return memory_->current.load(); }

@@ -1,15 +1,17 @@
 // Surfaces of revolution and triangles in one Embree scene: the one scene stack of the tools and of
-// Python's RaycastingScene. Each surface of revolution is a prototype (a revolve Shape + Geometry,
-// or a tessellated mesh, or Embree's own linear cone curve, in a scene of its own) instanced into
-// a flat top-level scene under its object's placement (geometry/placement.h); triangles (a scene
+// Python's RaycastingScene. Each surface of revolution is a prototype (a revolve Shape, or a
+// tessellated mesh, or Embree's own linear cone curve) placed under its object's placement
+// (geometry/placement.h): an exact surface as a revolve::Geometry of its own that maps rays into
+// object space itself, attached to the top scene (its Shape shared by every object of the same
+// profile); a mesh or cone curve by an Embree instance of the prototype's scene. Triangles (a scene
 // file's quads, a Python user's meshes) are top-level triangle geometries. Hits come back in world
 // space with their object's index, a smooth shading normal, and what is needed to spawn secondary
 // rays without re-hitting the surface.
 //
 // Geometry ids: every geometry, revolution or mesh, is attached under the id it was added as (0, 1,
-// ... in order), so Embree's instID (or geomID, for one attached to the top scene itself) is its
-// id. A scene file's objects[i] is geometry i, each distinct profile built once; its quads are one
-// triangle geometry under id objects.size(), quad q its triangles 2q and 2q + 1.
+// ... in order), so Embree's instID (for an instance) or geomID (for one attached to the top scene
+// itself) is its id. A scene file's objects[i] is geometry i, each distinct profile built once; its
+// quads are one triangle geometry under id objects.size(), quad q its triangles 2q and 2q + 1.
 #pragma once
 
 #include "embree/embree_handles.h"
@@ -46,9 +48,6 @@ struct Layout {
   // RTC_SCENE_FLAG_ROBUST on the top scene: watertight triangles (a ray through the edge two
   // triangles share does not slip between them), as Open3D's RaycastingScene asks of Embree.
   bool robust = false;
-  // A surface of revolution placed by the identity is attached to the top scene itself rather than
-  // instanced: an instance costs each ray a second traversal and two transforms.
-  bool identityUninstanced = false;
 };
 
 struct WorldHit {
@@ -118,8 +117,9 @@ class EmbreeScene {
   const Shape* shapeOf(std::uint32_t id) const noexcept;
   const app::Placement& placementOf(std::uint32_t id) const noexcept;  // the identity for a mesh
   const TriangleMesh* meshOf(std::uint32_t id) const noexcept;
-  // Whether `id` is attached to the top scene itself (a mesh; an identity under Layout::identityUninstanced).
-  bool uninstanced(std::uint32_t id) const noexcept;
+  // Whether a hit on `id` reports Embree's Ng in world space (a mesh; a surface of revolution
+  // placed by the identity); otherwise it is in object space, for the placement to carry.
+  bool worldNormals(std::uint32_t id) const noexcept;
   RTCScene handle() const noexcept { return top_.get(); }
 
   // Every geometry again, each with `filter` as its intersect filter, in a top scene of their own
@@ -178,9 +178,17 @@ class EmbreeScene {
   };
 
   EmbreeScene(const Layout& layout, bool unitDirections);
+  // An exact surface's Embree geometry for `instance`: placed by its placement, unplaced for the identity.
+  revolve::Geometry exactGeometry(const Shape& shape, const Instance& instance) const;
   // Places prototype `prototype` (built already) as a new geometry; returns its id.
   std::uint32_t addInstance(std::uint32_t prototype, const app::Placement& placement, std::uint32_t material,
                             float reflectivity = 1);
+  // The record of object `id` and, for an exact surface, its Embree geometry, without changing the
+  // scene: many are made in parallel. attach() adds instances_[index] (made for the next id) to the
+  // top scene.
+  Instance newInstance(std::uint32_t id, std::uint32_t prototype, const app::Placement& placement,
+                       std::uint32_t material, float reflectivity) const;
+  std::uint32_t attach(std::size_t index);
   RangeHit rangeHitOf(const RTCHit& hit, float t) const noexcept;
   std::uint32_t addMesh(TriangleMesh mesh);
   std::optional<WorldHit> hitOf(const Ray& ray, const RTCRayHit& rayHit) const noexcept;
@@ -203,6 +211,7 @@ class EmbreeScene {
   bool filteredCurrent_ = false;
   double buildSeconds_ = 0;
   bool unitDirections_ = false;  // Embree's cone curves need them
+  bool countStats_ = false;      // BuildSettings::countStats
 };
 
 }  // namespace revolve::scene

@@ -175,7 +175,7 @@ void recordMinimum(std::atomic<std::size_t>& first, std::size_t index) {
 
 }  // namespace
 
-RaycastingScene::RaycastingScene() : scene_(scene::Layout{.robust = true, .identityUninstanced = true}) {}
+RaycastingScene::RaycastingScene() : scene_(scene::Layout{.robust = true}) {}
 
 std::uint32_t RaycastingScene::addRevolution(Shape shape, const app::Placement& placement) {
   std::unique_lock lock(mutex_);
@@ -313,10 +313,9 @@ std::optional<std::size_t> RaycastingScene::castRays(const float* rays, std::siz
     out.primitive[i] = rh.hit.primID;
     uv[0] = rh.hit.u;
     uv[1] = rh.hit.v;
-    const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-    const unsigned id = instanced ? rh.hit.instID[0] : rh.hit.geomID;
+    const unsigned id = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
     out.geometry[i] = id;
-    if (instanced) {
+    if (!scene_.worldNormals(id)) {
       // A placed revolution: its unit object-space normal carried to the world.
       const Vec3d n = scene_.placementOf(id).normalToWorld({rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z});
       normal[0] = float(n[0]), normal[1] = float(n[1]), normal[2] = float(n[2]);

@@ -5,6 +5,7 @@
 #include "embree/callback_kernels.h"
 #include "embree/cone_curve.h"
 #include "embree/payload.h"
+#include "embree/placed_callbacks.h"
 #include "embree/query_filters.h"
 #include "embree/tessellation.h"
 #include "shape/queries.h"
@@ -66,7 +67,19 @@ bool pointQueryCallback(RTCPointQueryFunctionArguments* args) {
   Vec3 point;
   float distance;
   std::uint32_t segment;
-  if (!instanced) {
+  const auto& payload = *static_cast<const detail::GeometryPayload*>(rtcGetGeometryUserData(geometry->handle()));
+  if (payload.placement) {
+    // Placed by the geometry itself (and perhaps instanced as well): as for an instance, the
+    // closest point in object space carried to world space (the closest one under a similarity
+    // transform), its distance measured there.
+    const int level = int(context.instStackSize) - 1;
+    const Vec3 inScene = instanced ? transformPoint(context.world2inst[level], world) : world;
+    const SurfacePoint closest = detail::closestSurfacePoint(shape, detail::toObjectSpace(*payload.placement, inScene));
+    const Vec3 placed = detail::toWorldSpace(*payload.placement, closest.point);
+    point = instanced ? transformPoint(context.inst2world[level], placed) : placed;
+    distance = distanceBetween(point, world);
+    segment = closest.segment;
+  } else if (!instanced) {
     const SurfacePoint closest = detail::closestSurfacePoint(shape, world);
     point = closest.point, distance = closest.distance, segment = closest.segment;
   } else {
@@ -103,6 +116,19 @@ Geometry::Geometry(RTCDevice device, const Shape& shape, Options options)
   const unsigned attributes = (options.normal ? 1u : 0u) | (options.uv ? 2u : 0u);  // CallbackKernels' order
   rtcSetGeometryIntersectFunction(geometry_, kernels.intersect[options.countStats][attributes]);
   rtcSetGeometryOccludedFunction(geometry_, kernels.occluded[options.countStats]);
+  rtcCommitGeometry(geometry_);
+}
+
+Geometry::Geometry(RTCDevice device, const Shape& shape, const Placement& placement, Options options)
+    : Geometry(device, shape, options) {
+  payload_->placement = std::make_unique<detail::PlacementMaps>(detail::placementMaps(placement));
+  const detail::CallbackKernels& kernels = detail::callbackKernels();
+  const unsigned attributes = (options.normal ? 1u : 0u) | (options.uv ? 2u : 0u);  // CallbackKernels' order
+  payload_->objectIntersect = kernels.intersect[options.countStats][attributes];
+  payload_->objectOccluded = kernels.occluded[options.countStats];
+  rtcSetGeometryBoundsFunction(geometry_, detail::placedBoundsCallback, nullptr);
+  rtcSetGeometryIntersectFunction(geometry_, detail::placedIntersectCallback);
+  rtcSetGeometryOccludedFunction(geometry_, detail::placedOccludedCallback);
   rtcCommitGeometry(geometry_);
 }
 
@@ -146,6 +172,10 @@ Stats Geometry::stats() const noexcept {
   stats.shellTests = payload_->shellTests.load(std::memory_order_relaxed);
   stats.quadratics = payload_->quadratics.load(std::memory_order_relaxed);
   return stats;
+}
+
+std::size_t Geometry::memoryBytes() const noexcept {
+  return payload_ ? sizeof(detail::GeometryPayload) + (payload_->placement ? sizeof(detail::PlacementMaps) : 0) : 0;
 }
 
 std::optional<ScenePoint> closestPoint(RTCScene scene, Vec3 p, float maxDistance, GeometryLookup lookup, void* user) {

@@ -8,11 +8,22 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 
 namespace revolve::detail {
 
+// A placed Geometry's map between world and object space (revolve::Placement and its inverse).
+struct PlacementMaps {
+  double linear[3][3], inverse[3][3], translate[3];
+};
+
 struct GeometryPayload {
-  const ShapeImpl* shape;        // the heap part of the Shape: it stays put when the Shape is moved
+  const ShapeImpl* shape;  // the heap part of the Shape: it stays put when the Shape is moved
+  // A placed Geometry: its maps, and the callbacks that search the shape once the rays are in
+  // object space (the instruction set's, as an unplaced Geometry's would be).
+  std::unique_ptr<PlacementMaps> placement;
+  RTCIntersectFunctionN objectIntersect = nullptr;
+  RTCOccludedFunctionN objectOccluded = nullptr;
   bool intersectFilter = false;  // the geometry has its own intersection filter
   bool occlusionFilter = false;  // ... its own occlusion filter
   bool argumentFilter = false;   // enableFilterFunctionFromArguments (Embree 4)
