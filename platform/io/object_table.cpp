@@ -197,6 +197,7 @@ void TableReader::read(LineSource& profileLines, LineSource& objectLines) {
       pendingPoints_ += object.points.size();
       pending_.push_back(std::move(object));
       ++next;
+      // A batch is so many objects, or as many points as that many of the family's 64-point profiles.
       if (pending_.size() == kBatchObjects || pendingPoints_ >= kBatchObjects * 64) flush();
     }
     if (next == 0) failAt(in_, keys_.objectsPath, keys_.objectsFile, 0, "no objects");
