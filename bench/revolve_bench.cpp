@@ -19,6 +19,7 @@
 #include "povray.h"
 #include "report.h"
 #include "run_info.h"
+#include "scale/scale_scene_file.h"
 #include "scale/scale_suite.h"
 #include "suites.h"
 
@@ -29,6 +30,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <sstream>
@@ -129,6 +131,13 @@ int main(int argc, char** argv) {
   scaleRun->add_option("--lidar", scale.lidarAzimuths, "lidar azimuth steps (32 rings each)")
       ->check(app::wholeNumberIn(1, 1000000))
       ->capture_default_str();
+  std::string writeScene;
+  scaleRun
+      ->add_option("--write-scene", writeScene,
+                   "write the N objects as a scene file (DIR/scale-N.json and its two object-table CSVs) and stop")
+      ->check(app::kNonEmpty);
+  scaleRun->add_option("--scene", scale.sceneFile, "build this scene file's objects (read time reported apart)")
+      ->check(app::kNonEmpty);
   cli.require_subcommand(0, 1);
   if (const std::optional<int> status = app::parseCommandLine(cli, argc, argv, "revolve-bench")) return *status;
 
@@ -184,6 +193,14 @@ int main(int argc, char** argv) {
         throw std::runtime_error("--csv, --rays and --min-time belong to speed-error and scaling");
       scale.mesh = scaleGeometry == "mesh";
       scale.seed = settings.seed;
+      if (!writeScene.empty()) {
+        if (!scale.sceneFile.empty()) throw std::runtime_error("--write-scene and --scene: one at a time");
+        const auto start = std::chrono::steady_clock::now();
+        const std::string written = writeFamilyScene(ScaleFamily{.seed = scale.seed}, scale.objects, writeScene);
+        std::printf("%s: %zu objects written in %.2f s\n", written.c_str(), scale.objects,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        return;
+      }
       scale.repetitions = repetitionsFor(settings.repetitions);
       if (!camera.empty()) scale.cameraWidth = settings.cameraWidth, scale.cameraHeight = settings.cameraHeight;
       nlohmann::ordered_json document = runInfo(commandLine);

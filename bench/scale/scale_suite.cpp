@@ -20,6 +20,7 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -133,9 +134,24 @@ nlohmann::ordered_json shapeBreakdown(const Shape& shape) {
 
 }  // namespace
 
-nlohmann::ordered_json runScale(const ScaleSettings& settings) {
+nlohmann::ordered_json runScale(const ScaleSettings& given) {
+  ScaleSettings settings = given;
   const ScaleFamily family{.seed = settings.seed};
   nlohmann::ordered_json record;
+  // From a file: its objects, read and timed first (the grid's rays assume the family's layout).
+  std::optional<io::SceneDescription> fromFile;
+  if (!settings.sceneFile.empty()) {
+    if (settings.mesh)
+      throw std::runtime_error("--scene builds the file's exact surfaces; --geometry mesh is for the family");
+    const double residentBefore = residentBytes();
+    const auto start = Clock::now();
+    fromFile = io::readScene(settings.sceneFile);
+    record["scene_file"] = settings.sceneFile;
+    record["read_seconds"] = secondsSince(start);
+    record["read_resident_bytes"] = residentBytes() - residentBefore;
+    settings.objects = fromFile->objects.size();
+    if (settings.objects == 0) throw std::runtime_error(settings.sceneFile + ": no objects to build");
+  }
   record["objects"] = settings.objects;
   record["geometry"] = settings.mesh ? "mesh" : "revolve";
   record["points_per_profile"] = ScaleFamily::kPoints;
@@ -143,15 +159,17 @@ nlohmann::ordered_json runScale(const ScaleSettings& settings) {
   // Meshes are matched to the error of a 64-point polyline against the smooth shape it samples:
   // polylines keep their points, splines are sampled within it, and the slices keep the polygon
   // within it of the circle at the family's largest radius (0.6).
-  const double error = family.polylineError(std::min<std::size_t>(settings.objects, 1000));
+  const double error = family.polylineError(std::min<std::size_t>(settings.objects, 1000));  // (the family's)
   const auto slices = std::uint32_t(std::ceil(std::numbers::pi / std::acos(1.0 - error / 0.6)));
   record["matched_error"] = error;
   if (settings.mesh) record["mesh_slices"] = slices;
 
   const double residentBefore = residentBytes();
   io::SceneDescription description =
-      familyDescription(family, settings.objects, FamilyScene{.mesh = settings.mesh, .tolerance = error});
-  record["description_bytes"] = residentBytes() - residentBefore;
+      fromFile ? std::move(*fromFile)
+               : familyDescription(family, settings.objects, FamilyScene{.mesh = settings.mesh, .tolerance = error});
+  fromFile.reset();
+  if (!record.contains("read_resident_bytes")) record["description_bytes"] = residentBytes() - residentBefore;
 
   // Time to the first ray: the build (shapes in parallel, Embree's instances and tree) and one ray.
   const auto start = Clock::now();
@@ -192,6 +210,10 @@ nlohmann::ordered_json runScale(const ScaleSettings& settings) {
 
 void printScale(std::FILE* out, const nlohmann::ordered_json& record) {
   const nlohmann::ordered_json& memory = record["memory"];
+  if (record.contains("scene_file")) {
+    std::fprintf(out, "%s: read %.2f s (resident %.1f MB more)\n", record["scene_file"].get<std::string>().c_str(),
+                 record["read_seconds"].get<double>(), record["read_resident_bytes"].get<double>() * 1e-6);
+  }
   std::fprintf(out,
                "%s, %zu objects: build %.2f s, first ray %.2f s; memory %.0f bytes an object counted "
                "(revolve %.1f MB, Embree %.1f MB, records %.1f MB), peak resident %.1f MB; camera %.2f Mrays/s "

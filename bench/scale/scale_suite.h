@@ -21,6 +21,9 @@ struct ScaleSettings {
   int lidarAzimuths = 2048, lidarElevations = 32;  // a spinning lidar's beams: 32 rings, +-15 degrees
   int repetitions = 5;                             // of each throughput measurement (median reported)
   std::uint64_t seed = 20011;
+  // A scene file to build instead of the family made in code (--scene; written by --write-scene):
+  // the file's read (scene_file.h, object tables included) is timed apart from the build.
+  std::string sceneFile;
 };
 
 // Builds the scene, traces, and returns the JSON record of the run (without the run's header).

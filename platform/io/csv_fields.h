@@ -64,6 +64,28 @@ inline std::string quote(std::string_view text) {
   return out + (text.size() > 40 ? "...\"" : "\"");
 }
 
+// The rows of a CSV file from its lines (Lines over a whole text, or FileLines over a file read a
+// block at a time): blank lines skipped; a first line equal to `header` skipped, and a first line
+// that starts with a non-number reported as a wrong header; every other line split into fields and
+// required to hold `columns` of them. Errors are InputErrors naming the file and line.
+template <class LineSource>
+class Rows {
+ public:
+  Rows(LineSource& lines, std::string_view file, std::string_view header, std::size_t columns)
+      : lines_(lines), file_(file), header_(header), columns_(columns) {}
+
+  // The next row's fields (valid until the next call), or nullptr after the last.
+  const std::vector<std::string_view>* next();
+  std::size_t line() const { return lines_.number(); }
+
+ private:
+  LineSource& lines_;
+  std::string_view file_, header_;
+  std::size_t columns_;
+  bool first_ = true;
+  std::vector<std::string_view> fields_;
+};
+
 // A whole field as a number of type T, rounded once from its decimal text. A value beyond T's range
 // rounds as IEEE says, to +-inf or (gradually) to zero: from_chars reports those as out of range
 // without a value, so they are re-read with strtof / strtod, which round them correctly (the
@@ -84,6 +106,35 @@ std::optional<T> parseNumber(std::string_view field) {
   }
   if (error != std::errc()) return std::nullopt;
   return value;
+}
+
+template <class LineSource>
+const std::vector<std::string_view>* Rows<LineSource>::next() {
+  while (const std::optional<std::string_view> raw = lines_.next()) {
+    const std::string_view line = trim(*raw);
+    if (line.empty()) continue;
+    fields_ = splitFields(line);
+    if (first_) {
+      first_ = false;
+      if (!parseNumber<double>(fields_[0])) {
+        std::string joined;
+        for (std::size_t i = 0; i < fields_.size(); ++i) {
+          if (i > 0) joined += ',';
+          joined += fields_[i];
+        }
+        if (joined == header_) continue;
+        throw InputError(file_, lines_.number(),
+                         "header " + quote(line) + " is not the expected \"" + std::string(header_) + "\"");
+      }
+    }
+    if (fields_.size() != columns_) {
+      throw InputError(file_, lines_.number(),
+                       "expected " + std::to_string(columns_) + " comma-separated values (" + std::string(header_) +
+                           "), found " + std::to_string(fields_.size()));
+    }
+    return &fields_;
+  }
+  return nullptr;
 }
 
 }  // namespace revolve::io::csv

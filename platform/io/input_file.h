@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -45,6 +46,34 @@ struct FileTexts {
   // The text of `path`: the one kept, else the file read as readTextFile reads it (and kept). A kept
   // text is held to the same size limit.
   const std::string& text(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+};
+
+// The lines of the regular file at `path`, read a block at a time, so that memory stays bounded
+// however large the file (a bulk object table of a million profiles is gigabytes of text): the same
+// lines, numbering and limits as csv::Lines gives for a whole text (a line longer than
+// kMaxCsvLineBytes is an InputError naming its number), and the file held to `maxBytes` as
+// readTextFile holds it.
+class FileLines {
+ public:
+  FileLines(const std::string& path, std::uint64_t maxBytes, std::string_view kind);
+  ~FileLines();
+  FileLines(const FileLines&) = delete;
+  FileLines& operator=(const FileLines&) = delete;
+
+  // The next line without its '\n', valid until the next call; nullopt after the last.
+  std::optional<std::string_view> next();
+  std::size_t number() const { return number_; }
+
+ private:
+  bool fill();  // reads another block after the unread bytes; false at the end of the file
+
+  std::string path_, kind_;
+  std::uint64_t maxBytes_ = 0, bytesRead_ = 0;
+  int fd_ = -1;
+  std::string buffer_;
+  std::size_t begin_ = 0, end_ = 0;  // the unread bytes of buffer_
+  bool atEnd_ = false;
+  std::size_t number_ = 0;
 };
 
 // What a path that is not a regular file names, for messages: "a directory", "a FIFO (named

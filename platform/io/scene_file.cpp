@@ -2,17 +2,23 @@
 
 #include "io/curve_tolerance.h"
 #include "io/json_reader.h"
+#include "io/object_table.h"
+#include "io/scene_profiles.h"
 #include "io/text_files.h"
 
+#include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace revolve::io {
 namespace {
@@ -74,15 +80,6 @@ SceneCamera readCamera(const Reader& in, const Json& json) {
   return camera;
 }
 
-// The profile's points as read, with where each came from for messages: an element of "points",
-// or a line of a CSV file.
-struct ProfileSource {
-  std::vector<Point2> points;
-  std::function<std::string(std::size_t)> where;  // the key path or "file:line" of point i
-  std::string path;                               // the key path of the points (or the csv key)
-  std::string file;                               // the CSV as opened; empty for inline points
-};
-
 ProfileSource readPoints(const Reader& in, const Json& json, const std::string& path, const std::string& directory,
                          FileTexts* csvs) {
   const Json* points = in.optional(json, "points");
@@ -117,76 +114,42 @@ ProfileSource readPoints(const Reader& in, const Json& json, const std::string& 
           csvPath, file};
 }
 
-SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
-                         const std::string& directory, FileTexts* csvs) {
+// A named profile's recipe from its keys.
+ProfileRecipe readRecipe(const Reader& in, const Json& json, const std::string& path) {
   in.object(json, path, {"points", "csv", "crease", "spline", "tolerance"});
-  double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;
+  ProfileRecipe recipe;
+  recipe.splinePath = child(path, "spline");
+  recipe.tolerancePath = child(path, "tolerance");
   if (const Json* crease = in.optional(json, "crease")) {
-    creaseDegrees = in.numberIn(*crease, child(path, "crease"), 0, 180, "a crease angle lies in [0, 180] degrees");
+    recipe.creaseDegrees =
+        in.numberIn(*crease, child(path, "crease"), 0, 180, "a crease angle lies in [0, 180] degrees");
   }
-  SplineKind kind = SplineKind::linear;
   if (const Json* spline = in.optional(json, "spline")) {
-    const std::string text = in.string(*spline, child(path, "spline"));
+    const std::string text = in.string(*spline, recipe.splinePath);
     const std::optional<SplineKind> named = splineKindNamed(text);
     if (!named) {
-      in.fail(child(path, "spline"), "unknown spline kind " + quotedText(text) +
-                                         "; expected one of: linear, quadratic, bezier, catmull-rom, natural");
+      in.fail(recipe.splinePath, "unknown spline kind " + quotedText(text) +
+                                     "; expected one of: linear, quadratic, bezier, catmull-rom, natural");
     }
-    kind = *named;
+    recipe.kind = *named;
   }
-  const std::string tolerancePath = child(path, "tolerance");
-  double tolerance = 0;
   if (const Json* value = in.optional(json, "tolerance")) {
-    tolerance = in.number(*value, tolerancePath);
-    if (kind == SplineKind::linear) {
-      in.fail(tolerancePath,
+    recipe.tolerance = in.number(*value, recipe.tolerancePath);
+    if (recipe.kind == SplineKind::linear) {
+      in.fail(recipe.tolerancePath,
               "applies to a curved \"spline\" (quadratic, bezier, catmull-rom or natural) only; a polyline is traced "
               "as it is");
     }
-    if (const std::optional<std::string> fault = toleranceFault(tolerance, numberText(*value)))
-      in.fail(tolerancePath, *fault);
+    if (const std::optional<std::string> fault = toleranceFault(recipe.tolerance, numberText(*value)))
+      in.fail(recipe.tolerancePath, *fault);
   }
-  const ProfileSource source = readPoints(in, json, path, directory, csvs);
-  const auto failAt = [&](const ProfileError& error) {
-    if (error.index() >= source.points.size()) in.fail(source.path, error.what());
-    // Points are named by their key path; a CSV's by its file and line, under the csv key.
-    const std::string where = source.where(error.index());
-    if (where.rfind(source.path, 0) == 0) in.fail(where, error.what());
-    in.fail(source.path, where + ": " + error.what());
-  };
-  std::vector<std::string> warnings;
-  if (kind == SplineKind::linear) {
-    std::optional<Profile> built;
-    try {
-      built.emplace(source.points);
-    } catch (const ProfileError& error) {
-      failAt(error);
-    }
-    for (const ProfileWarning& warning : built->warnings()) {
-      const std::string where = source.where(warning.index);
-      warnings.push_back((where.rfind(source.path, 0) == 0 ? in.file() + ": " : "") + where + ": " + warning.message);
-    }
-    return {name, std::move(*built), creaseDegrees, std::move(warnings), source.file, std::nullopt, 0};
-  }
-  std::optional<Spline> spline;
-  try {
-    spline.emplace(kind, source.points);
-  } catch (const ProfileError& error) {
-    failAt(error);
-  }
-  double size = 0;
-  for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
-  std::optional<Profile> polyline;
-  try {
-    // A tolerance the user gave is held to the rule every tool applies (io/curve_tolerance.h).
-    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance)
-                                   : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
-  } catch (const std::invalid_argument& error) {
-    in.fail(tolerance > 0 ? tolerancePath : child(path, "spline"), error.what());
-  }
-  if (tolerance > 0)
-    return {name, std::move(*polyline), creaseDegrees, {}, source.file, std::nullopt, tolerance, std::move(spline)};
-  return {name, std::move(*polyline), creaseDegrees, {}, source.file, spline, 0, spline};
+  return recipe;
+}
+
+SceneProfile readProfile(const Reader& in, const std::string& name, const Json& json, const std::string& path,
+                         const std::string& directory, FileTexts* csvs) {
+  const ProfileRecipe recipe = readRecipe(in, json, path);
+  return buildSceneProfile(in, name, recipe, readPoints(in, json, path, directory, csvs));
 }
 
 SceneMaterial readMaterial(const Reader& in, const std::string& name, const Json& json, const std::string& path) {
@@ -335,7 +298,9 @@ SceneDescription parseSceneText(std::string_view text, const std::string& file, 
                                 FileTexts* csvs) {
   const Reader in(file);
   const Json root = json::parse(text, in);
-  in.object(root, "", {"description", "camera", "profiles", "materials", "objects", "quads", "lights", "environment"});
+  in.object(
+      root, "",
+      {"description", "camera", "profiles", "materials", "objects", "object_tables", "quads", "lights", "environment"});
   SceneDescription scene;
   scene.file = file;
   if (const Json* description = in.optional(root, "description")) in.string(*description, "description");
@@ -344,10 +309,31 @@ SceneDescription parseSceneText(std::string_view text, const std::string& file, 
   const Json& profiles = in.required(root, "", "profiles");
   if (!profiles.is_object())
     in.fail("profiles", std::string("expected an object of named profiles, found ") + profiles.type_name());
+  // Each profile's checks and curve are its own: built in parallel, the first error in order reported.
+  std::vector<std::pair<std::string, const Json*>> named;
   for (const auto& [name, value] : profiles.items()) {
     checkName(in, name, child("profiles", name));
-    scene.profiles.push_back(readProfile(in, name, value, child("profiles", name), directory, csvs));
+    named.emplace_back(name, &value);
   }
+  // A CSV is read (and kept in `csvs`) in order first: FileTexts is not for concurrent use.
+  if (csvs != nullptr) {
+    for (const auto& [name, value] : named) {
+      if (const Json* csv = value->is_object() ? in.optional(*value, "csv") : nullptr; csv && csv->is_string()) {
+        try {
+          csvs->text((std::filesystem::path(directory) / csv->get<std::string>()).string(), kMaxCsvFileBytes,
+                     "a CSV file");
+        } catch (const InputError&) {  // reported below, in its profile's turn
+        }
+      }
+    }
+  }
+  std::vector<std::optional<SceneProfile>> built(named.size());
+  forEachInParallel(named.size(), [&](std::size_t i) {
+    const auto& [name, value] = named[i];
+    built[i].emplace(readProfile(in, name, *value, child("profiles", name), directory, csvs));
+  });
+  scene.profiles.reserve(built.size());
+  for (std::optional<SceneProfile>& profile : built) scene.profiles.push_back(std::move(*profile));
 
   const Json& materials = in.required(root, "", "materials");
   if (!materials.is_object())
@@ -376,6 +362,13 @@ SceneDescription parseSceneText(std::string_view text, const std::string& file, 
     const double reach = app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform));
     if (const std::optional<std::string> fault = app::reachFault(reach)) in.fail(path, *fault);
     scene.objects.push_back(std::move(object));
+  }
+
+  // Tables' objects follow the listed ones, table by table (io/object_table.h).
+  if (const Json* tables = in.optional(root, "object_tables")) {
+    in.array(*tables, "object_tables");
+    for (std::size_t t = 0; t < tables->size(); ++t)
+      readObjectTable(in, (*tables)[t], element("object_tables", t), directory, csvs, scene);
   }
 
   if (const Json* quads = in.optional(root, "quads")) {
@@ -417,6 +410,68 @@ SceneDescription parseSceneText(std::string_view text, const std::string& file, 
 }
 
 }  // namespace
+
+SceneProfile buildSceneProfile(const SceneReader& in, std::string name, const ProfileRecipe& recipe,
+                               const ProfileSource& source) {
+  const auto failAt = [&](const ProfileError& error) {
+    if (error.index() >= source.points.size()) in.fail(source.path, error.what());
+    // Points are named by their key path; a CSV's by its file and line, under the csv key.
+    const std::string where = source.where(error.index());
+    if (where.rfind(source.path, 0) == 0) in.fail(where, error.what());
+    in.fail(source.path, where + ": " + error.what());
+  };
+  std::vector<std::string> warnings;
+  if (recipe.kind == SplineKind::linear) {
+    std::optional<Profile> built;
+    try {
+      built.emplace(source.points);
+    } catch (const ProfileError& error) {
+      failAt(error);
+    }
+    for (const ProfileWarning& warning : built->warnings()) {
+      const std::string where = source.where(warning.index);
+      warnings.push_back((where.rfind(source.path, 0) == 0 ? in.file() + ": " : "") + where + ": " + warning.message);
+    }
+    return {
+        std::move(name), std::move(*built), recipe.creaseDegrees, std::move(warnings), source.file, std::nullopt, 0};
+  }
+  std::optional<Spline> spline;
+  try {
+    spline.emplace(recipe.kind, source.points);
+  } catch (const ProfileError& error) {
+    failAt(error);
+  }
+  double size = 0;
+  for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+  std::optional<Profile> polyline;
+  const double tolerance = recipe.tolerance;
+  try {
+    // A tolerance the user gave is held to the rule every tool applies (io/curve_tolerance.h).
+    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance)
+                                   : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
+  } catch (const std::invalid_argument& error) {
+    in.fail(tolerance > 0 ? recipe.tolerancePath : recipe.splinePath, error.what());
+  }
+  if (tolerance > 0) {
+    return {std::move(name), std::move(*polyline), recipe.creaseDegrees, {}, source.file, std::nullopt,
+            tolerance,       std::move(spline)};
+  }
+  return {std::move(name), std::move(*polyline), recipe.creaseDegrees, {}, source.file, spline, 0, spline};
+}
+
+void forEachInParallel(std::size_t count, const std::function<void(std::size_t)>& task) {
+  std::vector<std::exception_ptr> errors(count);
+  tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+    try {
+      task(i);
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
+}
 
 SceneDescription parseScene(std::string_view text, const std::string& file, const std::string& directory) {
   return parseSceneText(text, file, directory, nullptr);

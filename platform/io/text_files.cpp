@@ -13,40 +13,13 @@ namespace {
 
 using csv::parseNumber;
 using csv::quote;
-using csv::splitFields;
-using csv::trim;
 
-// Calls row(fields, line) for every non-blank line; a first line equal to `header` is skipped,
-// and a first line that starts with a non-number is reported as a wrong header.
+// Calls row(fields, line) for every row (csv::Rows).
 template <class Row>
 void forEachRow(std::string_view text, std::string_view file, std::string_view header, std::size_t columns, Row&& row) {
   csv::Lines lines(text, file);
-  bool first = true;
-  while (const std::optional<std::string_view> raw = lines.next()) {
-    const std::size_t lineNumber = lines.number();
-    const std::string_view line = trim(*raw);
-    if (line.empty()) continue;
-    const std::vector<std::string_view> fields = splitFields(line);
-    if (first) {
-      first = false;
-      if (!parseNumber<double>(fields[0])) {
-        std::string joined;
-        for (std::size_t i = 0; i < fields.size(); ++i) {
-          if (i > 0) joined += ',';
-          joined += fields[i];
-        }
-        if (joined == header) continue;
-        throw InputError(file, lineNumber,
-                         "header " + quote(line) + " is not the expected \"" + std::string(header) + "\"");
-      }
-    }
-    if (fields.size() != columns) {
-      throw InputError(file, lineNumber,
-                       "expected " + std::to_string(columns) + " comma-separated values (" + std::string(header) +
-                           "), found " + std::to_string(fields.size()));
-    }
-    row(fields, lineNumber);
-  }
+  csv::Rows rows(lines, file, header, columns);
+  while (const std::vector<std::string_view>* fields = rows.next()) row(*fields, rows.line());
 }
 
 template <class T>
