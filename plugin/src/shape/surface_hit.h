@@ -29,23 +29,23 @@ inline float callerT(const MeridianRay& ray, const Ray& caller, double s) noexce
 // same bit for bit whatever else is (each attribute is its own chain of operations).
 inline constexpr unsigned kNormalAttribute = 1, kUvAttribute = 2, kAllAttributes = 3;
 
-// Segment k's frame, from what it is measured on: a polyline's own points and arc lengths, or the
-// chord between a spline part's local knots and the part's v. Each value is one chain of operations
-// on the stored values, so every copy (and surfaceHitLanes) computes it bit for bit alike.
+// Segment k's frame, from what it is measured on: a polyline's own points, or the chord between a
+// spline part's local knots; v from the profile's arc lengths (a spline shape's: the curve's length
+// up to each part end). Each value is one chain of operations on the stored values, so every copy
+// (and surfaceHitLanes) computes it bit for bit alike.
 template <bool kCurve>
 inline SegmentFrame segmentFrameOf(const detail::ShapeImpl& shape, std::uint32_t k) noexcept {
-  double er, ez, v0, dv;
+  double er, ez;
   if constexpr (kCurve) {
     const Point2 a = shape.local[k], b = shape.local[k + 1];
     er = b.r - a.r, ez = b.z - a.z;
-    v0 = shape.parts[k].v0, dv = shape.parts[k].dv;
   } else {
     const Point2* p = shape.profile.points().data();
-    const double* arc = shape.profile.arcLength().data();
-    const double total = arc[shape.profile.segmentCount()];
     er = p[k + 1].r - p[k].r, ez = p[k + 1].z - p[k].z;
-    v0 = arc[k] / total, dv = (arc[k + 1] - arc[k]) / total;
   }
+  const double* arc = shape.profile.arcLength().data();
+  const double total = arc[shape.profile.segmentCount()];
+  const double v0 = arc[k] / total, dv = (arc[k + 1] - arc[k]) / total;
   const double length2 = er * er + ez * ez;  // magnitudes within 2^+-60: no overflow, no underflow
   const double length = std::sqrt(length2);
   return {ez / length, -er / length, 1.0 / length2, v0, dv};
