@@ -133,10 +133,8 @@ io::SceneDescription vaseScene(int points, const std::optional<Spline>& spline =
   scene.camera.fovDegrees = 24;
   if (spline) {
     scene.file = "vase (" + std::to_string(spline->pieceCount()) + " Bezier pieces)";
-    // The polyline beside it is for the tools that need one (io::SceneProfile); it is not traced.
-    scene.profiles.push_back({.name = "vase",
-                              .profile = Profile::fromCurve(*spline, io::SceneProfile::kDrawingFraction * vase.size()),
-                              .spline = spline});
+    // Traced exactly: a tool that needs its polyline draws it (io::SceneProfile::polyline).
+    scene.profiles.push_back({.name = "vase", .spline = spline});
   } else {
     scene.file = "vase (" + std::to_string(points) + " points)";
     scene.profiles.push_back({.name = "vase", .profile = Profile(vase.sample(points))});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace revolve::bench {
 namespace {
@@ -57,7 +58,8 @@ void segmentHits(const Vec3d& p, const Vec3d& d, Point2 a, Point2 b, double& bes
 ReferenceRanges::ReferenceRanges(const io::SceneDescription& scene) {
   profiles_.reserve(scene.profiles.size());
   for (const io::SceneProfile& profile : scene.profiles) {
-    profiles_.emplace_back(profile.profile.points().begin(), profile.profile.points().end());
+    const std::span<const Point2> points = profile.polyline().points();
+    profiles_.emplace_back(points.begin(), points.end());
   }
   for (const io::SceneObject& object : scene.objects) {
     const app::Transform& t = object.transform;

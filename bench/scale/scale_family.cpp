@@ -85,10 +85,14 @@ io::SceneDescription familyDescription(const ScaleFamily& family, std::size_t co
   for (std::size_t i = 0; i < count; ++i) {
     const std::vector<Point2> p = family.points(i);
     if (!family.isSpline(i) || !how.mesh) {
-      // A polyline as it is; a spline traced exactly keeps its points as its polyline (nothing reads
-      // the polyline of an exact spline).
-      io::SceneProfile profile{.name = {}, .profile = Profile(p)};
-      if (family.isSpline(i)) profile.spline.emplace(SplineKind::catmullRom, p);
+      // A polyline as it is; a spline traced exactly has none until a tool asks for one
+      // (io::SceneProfile::polyline), as the scene reader makes it.
+      io::SceneProfile profile{.name = {}};
+      if (family.isSpline(i)) {
+        profile.spline.emplace(SplineKind::catmullRom, p);
+      } else {
+        profile.profile = Profile(p);
+      }
       scene.profiles.push_back(std::move(profile));
     } else {
       // Meshed as the scene file meshes a spline given a tolerance: its polyline, shaded by the curve.

@@ -84,7 +84,7 @@ OsprayScene::OsprayScene(const io::SceneDescription& scene, int width, int heigh
   std::vector<OSPGeometry> revolutions;
   for (const io::SceneProfile& p : scene.profiles) {
     if (meshSlices > 0) {
-      revolutions.push_back(OSPGeometry(keep(newMesh(p.profile, meshSlices, geometryBytes_))));
+      revolutions.push_back(OSPGeometry(keep(newMesh(p.polyline(), meshSlices, geometryBytes_))));
       continue;
     }
     OSPGeometry geometry = ospNewGeometry("revolution");
@@ -96,7 +96,7 @@ OsprayScene::OsprayScene(const io::SceneDescription& scene, int width, int heigh
       // A tolerance: the module traces the curve's polyline within it, shaded with the curve's normals.
       if (p.tolerance > 0) ospSetFloat(geometry, "tolerance", float(p.tolerance));
     } else {
-      for (const Point2& q : p.profile.points()) points.insert(points.end(), {float(q.r), float(q.z)});
+      for (const Point2& q : p.polyline().points()) points.insert(points.end(), {float(q.r), float(q.z)});
     }
     OSPData data = copied(points.data(), OSP_VEC2F, points.size() / 2);
     ospSetObject(geometry, "profile", data);
@@ -107,9 +107,9 @@ OsprayScene::OsprayScene(const io::SceneDescription& scene, int width, int heigh
     revolutions.push_back(OSPGeometry(keep(geometry)));
     // The same shape the module builds (a spline traced exactly, or the polyline), for its size;
     // for a curve traced as its polyline, also the curve's normals and the segments' starts it keeps.
-    geometryBytes_ += p.spline ? Shape(*p.spline).memoryBytes() : Shape(p.profile).memoryBytes();
+    geometryBytes_ += p.spline ? Shape(*p.spline).memoryBytes() : Shape(*p.profile).memoryBytes();
     if (!p.spline && p.curve && p.curve->kind() != SplineKind::linear) {
-      const ShadingNormals normals(p.profile, *p.curve);
+      const ShadingNormals normals(p.polyline(), *p.curve);
       geometryBytes_ += normals.memoryBytes() + normals.segmentCount() * sizeof(float);
     }
   }

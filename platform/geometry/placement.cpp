@@ -206,9 +206,12 @@ double Placement::reach(const Vec3d& lower, const Vec3d& upper) const {
 }
 
 double worldReach(const Profile& profile, const Placement& placement) {
+  return worldReach(profile.points(), placement);
+}
+
+double worldReach(std::span<const Point2> points, const Placement& placement) {
   double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-  for (const Point2 p : profile.points())
-    rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  for (const Point2 p : points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
   return placement.reach({-rMax, -rMax, zLow}, {rMax, rMax, zHigh});
 }
 

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -96,5 +97,8 @@ class Placement {
 // The largest |coordinate| any point of `profile` reaches placed by `placement`: the corners of its
 // box [-rmax, rmax]^2 x [zmin, zmax] carried to the world (what reachFault holds).
 double worldReach(const Profile& profile, const Placement& placement);
+// The same for the box of `points`: for a spline, its control points, whose hull holds the curve
+// (a reach at least the curve's, found without drawing it).
+double worldReach(std::span<const Point2> points, const Placement& placement);
 
 }  // namespace revolve::app

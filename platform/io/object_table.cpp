@@ -238,8 +238,9 @@ void TableReader::flush() {
     object.material = keys_.material;
     object.transform = pending.transform;
     object.reflectivity = keys_.reflectivity;
-    // Hits on it must lie within the limit too: secondary rays start there (as an object's).
-    const double reach = app::worldReach(profiles[i]->profile, app::Placement(object.transform));
+    // Hits on it must lie within the limit too: secondary rays start there (as an object's). An
+    // exact spline by its control points' reach, which bounds its curve's (boundingPoints).
+    const double reach = app::worldReach(boundingPoints(*profiles[i]), app::Placement(object.transform));
     if (const std::optional<std::string> fault = app::reachFault(reach))
       failAt(in_, keys_.objectsPath, keys_.objectsFile, pending.line, *fault);
   });

@@ -127,7 +127,7 @@ class Writer {
   // A spline traced exactly is written as the same curve, POV-Ray's bezier_spline (four points a
   // piece, neighbours repeating their shared end); every other profile as its polyline.
   static std::size_t lathePointCount(const SceneProfile& profile) {
-    return profile.spline ? 4 * profile.spline->pieceCount() : profile.profile.points().size();
+    return profile.spline ? 4 * profile.spline->pieceCount() : profile.polyline().points().size();
   }
 
   std::set<std::size_t> usedProfiles() const {
@@ -251,7 +251,7 @@ class Writer {
           for (std::size_t k = 0; k < 4; ++k) point(bezier[3 * piece + k]);
         }
       } else {
-        const auto points = profile.profile.points();
+        const auto points = profile.polyline().points();
         out << "  linear_spline " << points.size();
         for (const Point2& q : points) point(q);
       }

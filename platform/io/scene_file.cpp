@@ -15,7 +15,10 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <mutex>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -358,8 +361,11 @@ SceneDescription parseSceneText(std::string_view text, const std::string& file, 
     }
     object.transform = readTransform(in, json, path);
     object.reflectivity = readReflectivity(in, json, path);
-    // Hits on it must lie within the limit too: secondary rays start there.
-    const double reach = app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform));
+    // Hits on it must lie within the limit too: secondary rays start there. An exact spline is held
+    // to its control points' reach, which bounds its curve's (boundingPoints): conservative, and no
+    // polyline is drawn for it.
+    const double reach =
+        app::worldReach(boundingPoints(scene.profiles[object.profile]), app::Placement(object.transform));
     if (const std::optional<std::string> fault = app::reachFault(reach)) in.fail(path, *fault);
     scene.objects.push_back(std::move(object));
   }
@@ -441,22 +447,41 @@ SceneProfile buildSceneProfile(const SceneReader& in, std::string name, const Pr
   } catch (const ProfileError& error) {
     failAt(error);
   }
-  double size = 0;
-  for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
-  std::optional<Profile> polyline;
   const double tolerance = recipe.tolerance;
+  if (tolerance <= 0) {
+    // Traced exactly: its polyline is drawn only if a tool asks (SceneProfile::polyline; fromCurve
+    // cannot refuse kDrawingFraction of the spline's own size, far above 2^-40 of its extent).
+    return {std::move(name), std::nullopt, recipe.creaseDegrees, {}, source.file, spline, 0, spline};
+  }
+  std::optional<Profile> polyline;
   try {
     // A tolerance the user gave is held to the rule every tool applies (io/curve_tolerance.h).
-    polyline.emplace(tolerance > 0 ? curvePolyline(*spline, tolerance)
-                                   : Profile::fromCurve(*spline, SceneProfile::kDrawingFraction * size));
+    polyline.emplace(curvePolyline(*spline, tolerance));
   } catch (const std::invalid_argument& error) {
-    in.fail(tolerance > 0 ? recipe.tolerancePath : recipe.splinePath, error.what());
+    in.fail(recipe.tolerancePath, error.what());
   }
-  if (tolerance > 0) {
-    return {std::move(name), std::move(*polyline), recipe.creaseDegrees, {}, source.file, std::nullopt,
-            tolerance,       std::move(spline)};
-  }
-  return {std::move(name), std::move(*polyline), recipe.creaseDegrees, {}, source.file, spline, 0, spline};
+  return {std::move(name), std::move(*polyline), recipe.creaseDegrees, {}, source.file, std::nullopt,
+          tolerance,       std::move(spline)};
+}
+
+const Profile& SceneProfile::polyline() const {
+  if (profile) return *profile;
+  if (!spline) throw std::logic_error("SceneProfile \"" + name + "\" has neither a polyline nor a spline");
+  std::call_once(drawing->once, [this] {
+    double size = 0;
+    for (const Point2& p : spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+    drawing->polyline.emplace(Profile::fromCurve(*spline, kDrawingFraction * size));
+  });
+  return *drawing->polyline;
+}
+
+void drawPolylines(const SceneDescription& description) {
+  tbb::parallel_for(std::size_t{0}, description.profiles.size(),
+                    [&](std::size_t i) { (void)description.profiles[i].polyline(); });
+}
+
+std::span<const Point2> boundingPoints(const SceneProfile& profile) {
+  return profile.profile ? profile.profile->points() : profile.spline->bezier();
 }
 
 void forEachInParallel(std::size_t count, const std::function<void(std::size_t)>& task) {

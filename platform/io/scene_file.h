@@ -20,7 +20,10 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -43,25 +46,42 @@ struct SceneCamera {
 };
 
 struct SceneProfile {
-  // The fraction of a spline's size (its largest coordinate) within which `profile` follows a
+  // The fraction of a spline's size (its largest coordinate) within which polyline() follows a
   // curve traced exactly: fine enough that the tools drawing or meshing it do not show it.
   static constexpr double kDrawingFraction = 1e-5;
 
   std::string name;
-  // The polyline: the points of a linear profile; for a spline with a "tolerance", the curve as
-  // Profile::fromCurve samples it within that tolerance (what is traced); for a spline traced
-  // exactly, the curve sampled within kDrawingFraction of its size, for the tools that need a
-  // polyline (meshes, plots).
-  Profile profile;
+  // The polyline traced: the points of a linear profile; for a spline with a "tolerance", the curve
+  // as Profile::fromCurve samples it within that tolerance. Empty for a spline traced exactly, which
+  // needs none to be traced: polyline() draws one for the tools that do (meshes, plots).
+  std::optional<Profile> profile{};
   double creaseDegrees = ShadingNormals::kDefaultCreaseDegrees;  // for smooth shading normals
   std::vector<std::string> warnings{};                           // "where: message" for each point the Profile dropped
   std::string csvFile{};           // the CSV it was read from, as opened; empty for inline points
   std::optional<Spline> spline{};  // a curved "spline" without a "tolerance": traced exactly
   double tolerance = 0;            // the "tolerance" given, or 0
-  // The curve `profile` was made from (a curved "spline", with or without a "tolerance"): tools
-  // shading its polyline take the curve's own normals (ShadingNormals(profile, *curve)).
+  // The curve the polyline was made from (a curved "spline", with or without a "tolerance"): tools
+  // shading its polyline take the curve's own normals (ShadingNormals(polyline(), *curve)).
   std::optional<Spline> curve{};
+
+  // The polyline: `profile`, or for a spline traced exactly, Profile::fromCurve(*spline,
+  // kDrawingFraction * size), drawn on the first call (from any thread) and kept. Reading a scene of
+  // a million exact splines then costs no drawing the exact build never looks at.
+  const Profile& polyline() const;
+
+  // An exact spline's drawn polyline, shared by the copies of its SceneProfile (the spline they
+  // hold is the same). A std::once_flag is neither copyable nor movable, hence the pointer.
+  struct Drawing {
+    std::once_flag once;
+    std::optional<Profile> polyline;
+  };
+  std::shared_ptr<Drawing> drawing = std::make_shared<Drawing>();
 };
+
+// The points whose box holds every point of `profile`'s curve: the polyline's points, or for a
+// spline traced exactly its Bezier control points (each piece lies in the hull of its control
+// points), so that a reach check needs no drawing.
+std::span<const Point2> boundingPoints(const SceneProfile& profile);
 
 enum class MaterialType { diffuse, metal, mirror, glass };
 
@@ -115,6 +135,10 @@ struct SceneDescription {
   std::vector<SceneLight> lights;
   SceneEnvironment environment;
 };
+
+// Draws every exact spline's polyline (SceneProfile::polyline) on TBB's threads: for a tool about to
+// ask for all of them one after another.
+void drawPolylines(const SceneDescription& description);
 
 // Parses scene JSON `text`; `file` names it in messages and profile CSVs resolve against
 // `directory`. Throws SceneError.

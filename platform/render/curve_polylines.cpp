@@ -26,7 +26,7 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     }
     // The object's bounding sphere: the profile's box about its middle height, scaled and placed.
     double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-    for (const Point2& p : profile.profile.points())
+    for (const Point2& p : profile.polyline().points())
       rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     const app::Transform& t = object.transform;
     const double scale = std::max({t.scale[0], t.scale[1], t.scale[2]});
@@ -65,7 +65,7 @@ std::vector<CurvePolyline> applyCurveTolerance(io::SceneDescription& scene, cons
     profile.profile = std::move(*polyline);
     profile.spline.reset();  // traced as the polyline; profile.curve still gives its normals
     profile.tolerance = tolerance[i];
-    polylines.push_back({profile.name, tolerance[i], profile.profile.points().size()});
+    polylines.push_back({profile.name, tolerance[i], profile.polyline().points().size()});
   }
   return polylines;
 }

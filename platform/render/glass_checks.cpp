@@ -29,11 +29,11 @@ std::vector<std::string> glassWarnings(const io::SceneDescription& scene) {
     const std::string where = scene.file + ": objects[" + std::to_string(i) + "]" +
                               (object.name.empty() ? "" : " (\"" + object.name + "\")") + ": glass on profile \"" +
                               profile.name + "\"";
-    if (!profile.profile.closed()) {
+    if (!profile.polyline().closed()) {
       warnings.push_back(where +
                          " is open (its ends neither meet nor both lie on the axis): it renders as a sheet with no "
                          "inside; close it to make a solid");
-    } else if (twiceSignedArea(profile.profile) < 0) {
+    } else if (twiceSignedArea(profile.polyline()) < 0) {
       warnings.push_back(where +
                          " runs clockwise in (r, z): its normals point into the glass, which renders as a bubble of "
                          "air; list it from the axis at the bottom, up the outside");

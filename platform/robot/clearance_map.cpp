@@ -59,7 +59,7 @@ ClearanceMap::ClearanceMap(const io::SceneDescription& scene, double ground)
     if (shapeOf[object.profile] == nullptr) {
       const io::SceneProfile& profile = scene.profiles[object.profile];
       shapes_.push_back(profile.spline ? std::make_unique<Shape>(*profile.spline)
-                                       : std::make_unique<Shape>(profile.profile));
+                                       : std::make_unique<Shape>(*profile.profile));
       shapeOf[object.profile] = shapes_.back().get();
     }
   }

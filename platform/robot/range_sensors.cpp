@@ -57,8 +57,9 @@ std::vector<std::array<Vec3d, 3>> tessellated(std::span<const Point2> profile, c
 
 RangeSensors::RangeSensors(const io::SceneDescription& scene, io::RangeSensorsDescription sensors, Settings settings)
     : sensors_(std::move(sensors)) {
+  io::drawPolylines(scene);
   for (const io::SceneProfile& profile : scene.profiles) {
-    const auto points = profile.profile.points();
+    const auto points = profile.polyline().points();
     profiles_.emplace_back(points.begin(), points.end());
   }
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {

@@ -101,7 +101,7 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
     const auto& t = object.transform.translate;
     std::vector<Point> samples;
     constexpr int kAzimuths = 96;  // outlines within 0.05% of a circle's radius
-    for (const Point2 p : scene.profiles[object.profile].profile.points()) {
+    for (const Point2 p : scene.profiles[object.profile].polyline().points()) {
       for (int k = 0; k < kAzimuths; ++k) {
         const double phi = 2 * std::numbers::pi * k / kAzimuths;
         const Vec3d w = linear.apply(Vec3d{p.r * std::cos(phi), p.r * std::sin(phi), p.z});
@@ -111,7 +111,7 @@ nlohmann::json footprintOf(const io::SceneDescription& scene, double sensorHeigh
     objects.push_back(convexHull(samples));
     if (const std::optional<MeridianScale> upright = uprightScale(object.transform)) {
       const double z = (sensorHeight - t[2]) / upright->axial;  // the sensor's height in the profile's z
-      const std::span<const Point2> points = scene.profiles[object.profile].profile.points();
+      const std::span<const Point2> points = scene.profiles[object.profile].polyline().points();
       for (std::size_t i = 0; i + 1 < points.size(); ++i) {
         const Point2 a = points[i], b = points[i + 1];
         if ((a.z <= z) == (b.z <= z) || a.z == b.z) continue;

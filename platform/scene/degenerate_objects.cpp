@@ -32,9 +32,10 @@ bool insideMeridian(std::span<const Point2> points, double rho, double z) {
 
 std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& scene, bool camera) {
   std::vector<std::string> warnings;
+  io::drawPolylines(scene);  // the checks below read every profile's polyline
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const io::SceneObject& object = scene.objects[i];
-    const Profile& profile = scene.profiles[object.profile].profile;
+    const Profile& profile = scene.profiles[object.profile].polyline();
     std::string name = scene.file + ": objects[" + std::to_string(i) + "]";
     if (!object.name.empty()) name += " \"" + object.name + "\"";
     const std::span<const Point2> points = profile.points();

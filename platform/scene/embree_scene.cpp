@@ -85,8 +85,9 @@ namespace {
 // A polyline made from a curve shades with the curve's own normals (a coarse polyline then looks
 // like the curve); any other profile with normals interpolated between its vertices.
 ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
-  if (source.curve && !source.profile.curveParameters().empty()) return ShadingNormals(source.profile, *source.curve);
-  return ShadingNormals(source.profile, source.creaseDegrees);
+  const Profile& polyline = source.polyline();
+  if (source.curve && !polyline.curveParameters().empty()) return ShadingNormals(polyline, *source.curve);
+  return ShadingNormals(polyline, source.creaseDegrees);
 }
 
 }  // namespace
@@ -110,13 +111,13 @@ struct EmbreeScene::Prototype {
   // already): a scene of a million objects pays for neither.
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings) {
     const bool exact = !settings.mesh && !settings.embreeCone;
-    if (!exact) profile.emplace(source.profile);
+    if (!exact) profile.emplace(source.polyline());
     if (!exact || !source.spline) normals.emplace(shadingNormalsOf(source));
     if (exact) {
       if (source.spline) {
         shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
       } else {
-        shape.emplace(source.profile, settings.options);
+        shape.emplace(*source.profile, settings.options);
       }
       return;
     }
@@ -200,6 +201,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
     return description.file + ": objects[" + std::to_string(i) + "]" +
            (object.name.empty() ? "" : " \"" + object.name + "\"");
   };
+  if (settings.mesh || settings.embreeCone) io::drawPolylines(description);  // every one is read below
   if (settings.embreeCone) {
     for (std::size_t i = 0; i < description.objects.size(); ++i) {
       const io::SceneObject& object = description.objects[i];
@@ -220,7 +222,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       }
       which += ")";
       if (std::optional<std::string> limitation =
-              coneCurveLimitation(profile.profile, fromCurve ? "polyline point" : "profile point")) {
+              coneCurveLimitation(profile.polyline(), fromCurve ? "polyline point" : "profile point")) {
         throw std::runtime_error(which + " cannot be traced as Embree's linear cone curve: " + *limitation);
       }
       const app::Vec3d& scale = object.transform.scale;
@@ -246,7 +248,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
   if (settings.mesh) {
     double triangles = 0;
     for (const std::size_t profile : used)
-      triangles += 2.0 * double(description.profiles[profile].profile.segmentCount()) * settings.slices;
+      triangles += 2.0 * double(description.profiles[profile].polyline().segmentCount()) * settings.slices;
     app::requireMemory(triangles * app::kMeshBytesPerTriangle,
                        "--geometry mesh with " + std::to_string(settings.slices) + " slices (" +
                            std::to_string(std::uint64_t(triangles)) + " triangles)");

@@ -290,7 +290,7 @@ std::vector<std::uint32_t> load(Scene& scene, py::handle pathObject) {
   for (std::size_t i = 0; i < description.objects.size(); ++i) {
     const io::SceneObject& object = description.objects[i];
     const io::SceneProfile& profile = description.profiles[object.profile];
-    Shape shape = profile.spline ? Shape(*profile.spline) : Shape(profile.profile);
+    Shape shape = profile.spline ? Shape(*profile.spline) : Shape(*profile.profile);
     const app::Matrix3d linear = app::linearPart(object.transform);
     double rows[16] = {};
     for (int r = 0; r < 3; ++r) {
@@ -302,7 +302,7 @@ std::vector<std::uint32_t> load(Scene& scene, py::handle pathObject) {
     const app::Placement placement = placementOf(rows, shape, name.c_str());
     // Kept as add_revolution would take it: the curve's points and kind, or the polyline traced.
     Scene::RevolutionRecipe recipe;
-    const std::span<const Point2> points = profile.spline ? profile.spline->points() : profile.profile.points();
+    const std::span<const Point2> points = profile.spline ? profile.spline->points() : profile.profile->points();
     for (const Point2& p : points) recipe.points.insert(recipe.points.end(), {p.r, p.z});
     if (profile.spline) recipe.spline = splineKindName(profile.spline->kind());
     std::copy(rows, rows + 16, recipe.rows.begin());

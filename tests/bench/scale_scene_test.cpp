@@ -36,7 +36,7 @@ TEST(ScaleSceneTest, WrittenSceneReadsBackToTheFamily) {
     const io::SceneProfile& profile = scene.profiles[object.profile];
     const std::vector<Point2> expected = family.points(i);
     ASSERT_EQ(profile.spline.has_value(), family.isSpline(i)) << i;
-    const std::span<const Point2> read = family.isSpline(i) ? profile.spline->points() : profile.profile.points();
+    const std::span<const Point2> read = family.isSpline(i) ? profile.spline->points() : profile.profile->points();
     if (family.isSpline(i)) EXPECT_EQ(profile.spline->kind(), SplineKind::catmullRom);
     ASSERT_EQ(read.size(), expected.size()) << i;
     for (std::size_t k = 0; k < read.size(); ++k) {

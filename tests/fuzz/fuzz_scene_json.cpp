@@ -85,18 +85,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   checkPosition(scene.camera.to);
   checkUnit(scene.camera.up);
   for (const io::SceneProfile& profile : scene.profiles) {
-    FUZZ_CHECK(profile.profile.points().size() >= 2);
+    FUZZ_CHECK(profile.polyline().points().size() >= 2);
     // A curve traced exactly is a curved kind without a tolerance; one with a tolerance is its polyline.
     if (profile.spline) {
       FUZZ_CHECK(profile.spline->kind() != SplineKind::linear && profile.tolerance == 0);
-      FUZZ_CHECK(profile.profile.points().front().r == profile.spline->bezier().front().r);
+      FUZZ_CHECK(profile.polyline().points().front().r == profile.spline->bezier().front().r);
     }
     FUZZ_CHECK(profile.tolerance >= 0);
     FUZZ_CHECK(profile.creaseDegrees >= 0 && profile.creaseDegrees <= 180);
     // The shading normals of every accepted profile are built and unit at each segment's ends.
-    const ShadingNormals normals(profile.profile, profile.creaseDegrees);
-    const std::span<const double> arc = profile.profile.arcLength();
-    for (std::uint32_t s = 0; s < profile.profile.segmentCount() && s < 64; ++s) {
+    const ShadingNormals normals(profile.polyline(), profile.creaseDegrees);
+    const std::span<const double> arc = profile.polyline().arcLength();
+    for (std::uint32_t s = 0; s < profile.polyline().segmentCount() && s < 64; ++s) {
       for (const double at : {arc[s], arc[s + 1]}) {
         const Vec3 n = normals.normal(s, 0.3f, float(at / arc.back()));
         FUZZ_CHECK(std::abs(std::sqrt(double(n.x) * n.x + double(n.y) * n.y + double(n.z) * n.z) - 1) < 1e-5);
@@ -115,7 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkUnit(object.transform.rotateAxis);
     for (const double s : object.transform.scale) FUZZ_CHECK(s >= app::kMinScale && s <= app::kMaxScale);
     checkPosition(object.transform.translate);
-    FUZZ_CHECK(app::worldReach(scene.profiles[object.profile].profile, app::Placement(object.transform)) <=
+    FUZZ_CHECK(app::worldReach(scene.profiles[object.profile].polyline(), app::Placement(object.transform)) <=
                app::kMaxWorldCoordinate);
   }
   for (const io::SceneQuad& quad : scene.quads) {

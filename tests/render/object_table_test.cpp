@@ -90,7 +90,7 @@ TEST(ObjectTableTest, ObjectsReadBackAsWrittenAfterTheListedOnes) {
     EXPECT_EQ(object.material, 1u);  // "clay"
     EXPECT_EQ(object.reflectivity, 0.5);
     const io::SceneProfile& profile = scene.profiles[object.profile];
-    const std::span<const Point2> read = k == 1 ? profile.spline->points() : profile.profile.points();
+    const std::span<const Point2> read = k == 1 ? profile.spline->points() : profile.profile->points();
     ASSERT_EQ(read.size(), points[k].size()) << k;
     for (std::size_t i = 0; i < read.size(); ++i) {
       EXPECT_EQ(read[i].r, points[k][i].r) << k << " " << i;
@@ -125,7 +125,7 @@ TEST(ObjectTableTest, KeptTextsRebuildTheSameScene) {
   ASSERT_EQ(fromTexts.objects.size(), fromFiles.objects.size());
   for (std::size_t i = 0; i < fromFiles.objects.size(); ++i) {
     EXPECT_EQ(fromTexts.objects[i].transform.translate, fromFiles.objects[i].transform.translate);
-    const auto a = fromFiles.profiles[i].profile.points(), b = fromTexts.profiles[i].profile.points();
+    const auto a = fromFiles.profiles[i].polyline().points(), b = fromTexts.profiles[i].polyline().points();
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t k = 0; k < a.size(); ++k) EXPECT_TRUE(a[k].r == b[k].r && a[k].z == b[k].z);
   }

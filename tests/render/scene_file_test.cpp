@@ -8,9 +8,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace revolve {
 namespace {
@@ -138,8 +143,8 @@ TEST(SceneFileTest, SplineProfilesReadExactOrAsPolylines) {
   EXPECT_EQ(ball.tolerance, 0);
   // Its polyline for the tools that need one, within 1e-5 of the curve's size: its vertices lie on
   // the cubic, r(u) = 1.5 u (1 - u) (controls 0, 0.5, 0.5, 0) where z(u) = 0.6 u + 1.2 u^2 - 0.8 u^3.
-  EXPECT_GT(ball.profile.points().size(), 10u);
-  for (const Point2& p : ball.profile.points()) {
+  EXPECT_GT(ball.polyline().points().size(), 10u);
+  for (const Point2& p : ball.polyline().points()) {
     double lo = 0, hi = 1;  // z is increasing: the vertex's u by bisection
     for (int i = 0; i < 100; ++i) {
       const double u = 0.5 * (lo + hi);
@@ -150,10 +155,48 @@ TEST(SceneFileTest, SplineProfilesReadExactOrAsPolylines) {
   const io::SceneProfile& bottle = read.profiles[1];
   EXPECT_FALSE(bottle.spline.has_value());
   EXPECT_EQ(bottle.tolerance, 0.001);
-  EXPECT_EQ(bottle.profile.points().front().r, 0.0);
-  EXPECT_EQ(bottle.profile.points().back().z, 1.0);
+  EXPECT_EQ(bottle.polyline().points().front().r, 0.0);
+  EXPECT_EQ(bottle.polyline().points().back().z, 1.0);
   // A natural spline through 6 points with corners rounded: more points than its own 6.
-  EXPECT_GT(bottle.profile.points().size(), 6u);
+  EXPECT_GT(bottle.polyline().points().size(), 6u);
+}
+
+// Reading a spline traced exactly draws no polyline (the exact build never reads one): it is drawn
+// when a tool first asks, from any thread, once, and is Profile::fromCurve of the spline within
+// kDrawingFraction of its largest coordinate, computed here again.
+TEST(SceneFileTest, AnExactSplineIsDrawnOnlyWhenAsked) {
+  const testing::ScratchDirectory dir;
+  dir.write("scene.json", testing::replaced(testing::kScene, R"("ball": {)", R"("ball": {"spline": "bezier", )"));
+  dir.write("bottle.csv", testing::kBottleCsv);
+  const WorkingDirectory inside(dir.path());
+  const io::SceneDescription read = io::readScene("scene.json");
+  const io::SceneProfile& ball = read.profiles[0];
+  ASSERT_TRUE(ball.spline.has_value());
+  EXPECT_FALSE(ball.profile.has_value());
+  EXPECT_FALSE(ball.drawing->polyline.has_value());
+  const io::SceneProfile copy = ball;  // a copy shares the one drawing
+
+  double size = 0;
+  for (const Point2& p : ball.spline->bezier()) size = std::max({size, std::abs(p.r), std::abs(p.z)});
+  const Profile expected = Profile::fromCurve(*ball.spline, 1e-5 * size);
+
+  std::vector<const Profile*> drawn(4, nullptr);
+  {
+    std::vector<std::jthread> askers;
+    for (std::size_t i = 0; i < drawn.size(); ++i) askers.emplace_back([&, i] { drawn[i] = &ball.polyline(); });
+  }
+  for (const Profile* p : drawn) EXPECT_EQ(p, drawn[0]);  // drawn once
+  EXPECT_EQ(&copy.polyline(), drawn[0]);
+  const std::span<const Point2> a = drawn[0]->points(), b = expected.points();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_TRUE(a[k].r == b[k].r && a[k].z == b[k].z) << k;
+  const std::span<const double> ta = drawn[0]->curveParameters(), tb = expected.curveParameters();
+  EXPECT_TRUE(std::equal(ta.begin(), ta.end(), tb.begin(), tb.end()));
+
+  // A polyline profile is its own polyline.
+  const io::SceneProfile& bottle = read.profiles[1];
+  ASSERT_TRUE(bottle.profile.has_value());
+  EXPECT_EQ(&bottle.polyline(), &*bottle.profile);
 }
 
 // A scene rebuilt from texts alone (what a Python pickle of a Scene holds): the texts readScene
@@ -181,7 +224,7 @@ TEST(SceneFileTest, SuppliedTextsRebuildTheSceneWithoutItsFiles) {
   const io::SceneDescription rebuilt = io::parseScene(text, "scene.json", "", supplied);
   ASSERT_EQ(rebuilt.profiles.size(), read.profiles.size());
   for (std::size_t i = 0; i < read.profiles.size(); ++i) {
-    const auto a = read.profiles[i].profile.points(), b = rebuilt.profiles[i].profile.points();
+    const auto a = read.profiles[i].polyline().points(), b = rebuilt.profiles[i].polyline().points();
     ASSERT_EQ(a.size(), b.size());
     for (std::size_t k = 0; k < a.size(); ++k) {
       EXPECT_EQ(a[k].r, b[k].r);
