@@ -269,7 +269,7 @@ EmbreeScene::EmbreeScene(const io::SceneDescription& description, const BuildSet
       const app::Placement placement(object.transform);
       instances_[i] = newInstance(std::uint32_t(i), std::uint32_t(prototypeOf[object.profile]), placement,
                                   std::uint32_t(object.material), float(object.reflectivity));
-    } catch (const app::PlacementError& error) {
+    } catch (const std::exception& error) {  // the placement rule, or Embree refusing the geometry
       faults[i] = std::make_exception_ptr(std::runtime_error(objectName(i) + ": " + error.what()));
     } catch (...) {
       faults[i] = std::current_exception();
@@ -311,7 +311,12 @@ std::uint32_t EmbreeScene::addRevolution(Shape shape, const app::Placement& plac
   if (geometries_.size() >= RTC_INVALID_GEOMETRY_ID)
     throw std::length_error("a scene holds at most 2^32 - 1 geometries");
   prototypes_.push_back(std::make_unique<Prototype>(std::move(shape)));
-  return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
+  try {
+    return addInstance(std::uint32_t(prototypes_.size() - 1), placement, material);
+  } catch (...) {
+    prototypes_.pop_back();  // nothing added
+    throw;
+  }
 }
 
 std::uint32_t EmbreeScene::addRevolutions(std::vector<Shape> shapes, std::span<const app::Placement> placements) {
@@ -319,12 +324,12 @@ std::uint32_t EmbreeScene::addRevolutions(std::vector<Shape> shapes, std::span<c
   if (geometries_.size() + shapes.size() >= RTC_INVALID_GEOMETRY_ID)
     throw std::length_error("a scene holds at most 2^32 - 1 geometries");
   const std::size_t first = prototypes_.size();
-  prototypes_.reserve(first + shapes.size());
-  for (Shape& shape : shapes) prototypes_.push_back(std::make_unique<Prototype>(std::move(shape)));
   const auto firstId = std::uint32_t(geometries_.size());
   // The objects' records and Embree geometries made in parallel, then attached in order.
   const std::size_t firstInstance = instances_.size();
   try {
+    prototypes_.reserve(first + shapes.size());
+    for (Shape& shape : shapes) prototypes_.push_back(std::make_unique<Prototype>(std::move(shape)));
     instances_.resize(firstInstance + shapes.size());
     tbb::parallel_for(std::size_t{0}, shapes.size(), [&](std::size_t i) {
       instances_[firstInstance + i] =
@@ -512,7 +517,7 @@ std::uint32_t EmbreeScene::objectOf(const RTCHit& hit) const noexcept {
 RangeHit EmbreeScene::rangeHitOf(const RTCHit& hit, float t) const noexcept {
   const std::uint32_t id = hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? hit.instID[0] : hit.geomID;
   const Geometry& g = geometries_[id];
-  Vec3 n{hit.Ng_x, hit.Ng_y, hit.Ng_z};  // object space for an instance, else the world's
+  Vec3 n{hit.Ng_x, hit.Ng_y, hit.Ng_z};  // object space unless worldNormals (a mesh, an identity placement)
   RangeHit range;
   range.t = t;
   range.object = id;

@@ -104,10 +104,11 @@ void placedBoundsCallback(const RTCBoundsFunctionArguments* args) {
   const auto& payload = *static_cast<const GeometryPayload*>(args->geometryUserPtr);
   const PlacementMaps& maps = *payload.placement;
   const Bounds b = payload.shape->bounds;
-  // The box's eight corners mapped in double: each coordinate sum of three products and the
-  // translation is within gamma(3) (double) of its magnitude sum, which widens the box before it is
-  // rounded outwards to float, so that the float box holds the exactly placed one.
-  constexpr double kGamma3 = 3 * kUnitRoundoff / (1 - 3 * kUnitRoundoff);
+  // The box's eight corners mapped in double: each coordinate, three products and three additions,
+  // is within gamma(4) (double) of its magnitude sum; x - error and x + error round once more, by
+  // at most u (|x| + error), so gamma(5) of the magnitude sum widens the box enough before it is
+  // rounded outwards to float: the float box holds the exactly placed one.
+  constexpr double kGamma5 = 5 * kUnitRoundoff / (1 - 5 * kUnitRoundoff);
   double lower[3], upper[3];
   for (int r = 0; r < 3; ++r) {
     lower[r] = std::numeric_limits<double>::infinity();
@@ -119,7 +120,7 @@ void placedBoundsCallback(const RTCBoundsFunctionArguments* args) {
     for (int r = 0; r < 3; ++r) {
       const double* m = maps.linear[r];
       const double x = m[0] * p[0] + m[1] * p[1] + m[2] * p[2] + maps.translate[r];
-      const double error = kGamma3 * (std::abs(m[0] * p[0]) + std::abs(m[1] * p[1]) + std::abs(m[2] * p[2]) +
+      const double error = kGamma5 * (std::abs(m[0] * p[0]) + std::abs(m[1] * p[1]) + std::abs(m[2] * p[2]) +
                                       std::abs(maps.translate[r]));
       lower[r] = std::min(lower[r], x - error);
       upper[r] = std::max(upper[r], x + error);
