@@ -918,6 +918,41 @@ TEST(PlacedGeometryTest, ClosestPointIsTheObjectSpaceOneCarriedToTheWorld) {
   }
 }
 
+// Filters on a placed geometry see its hits as on an unplaced one (u, v in object space), and a
+// rejection finds the next hit: the placement (scale 2, exact in float) maps the world ray onto the
+// object-space ray whose first accepted hit the long-double reference gives.
+TEST(PlacedGeometryTest, AFilterRejectionFindsTheNextHitAndTheRayComesBackUnchanged) {
+  const std::vector<Point2> points = testing::hollowVase();
+  const revolve::Placement placement = placed::quarterTurn(2, 0, {0, 0, 0});
+  placed::PlacedScene s(Shape(Profile(points)), placement);
+  s.geometry.setIntersectFilter(rejectLowerHalf);
+  rtcCommitGeometry(s.geometry.handle());
+  rtcCommitScene(s.scene.get());
+  std::mt19937_64 random(808);
+  std::size_t checked = 0, secondHits = 0;
+  for (const Ray& objectRay : testing::incoherentRays(s.shape, random, 3000)) {
+    bool ambiguous;
+    const std::optional<long double> expected = firstAcceptedReferenceHit(points, objectRay, ambiguous);
+    if (ambiguous) continue;
+    const Ray worldRay{placed::apply(placement, objectRay.origin, true),
+                       placed::apply(placement, objectRay.direction, false), objectRay.tnear, objectRay.tfar};
+    embree::RayQuery query;
+    RTCRayHit rh = toRayHit(worldRay);
+    query.intersect(s.scene.get(), rh);
+    ++checked;
+    EXPECT_EQ(rh.ray.org_x, worldRay.origin.x);
+    EXPECT_EQ(rh.ray.dir_y, worldRay.direction.y);
+    ASSERT_EQ(rh.hit.geomID != RTC_INVALID_GEOMETRY_ID, expected.has_value());
+    if (!expected) continue;
+    EXPECT_GE(rh.hit.u, 0.5f);
+    EXPECT_NEAR(rh.ray.tfar, double(*expected), 1e-5 * (1.0 + double(*expected)));
+    const std::optional<Hit> unfiltered = intersect(s.shape, objectRay);
+    secondHits += unfiltered && unfiltered->t < rh.ray.tfar;
+  }
+  EXPECT_GT(checked, 2500u);
+  EXPECT_GT(secondHits, 100u);
+}
+
 TEST(PlacedGeometryTest, RefusesPlacementsThatAreNotFiniteOrSingular) {
   DevicePtr device = newDevice();
   const Shape shape{Profile(testing::hollowVase())};
