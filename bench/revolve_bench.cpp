@@ -128,6 +128,13 @@ int main(int argc, char** argv) {
   scaleRun->add_option("--geometry", scaleGeometry, "revolve (exact) or mesh (Embree triangles)")
       ->check(CLI::IsMember({"revolve", "mesh"}))
       ->capture_default_str();
+  std::string scaleBuild = "scene";
+  scaleRun
+      ->add_option("--build", scaleBuild,
+                   "scene: through the tools' scene stack (a scene description, its records); library: each "
+                   "object's revolve::Shape and placed revolve::Geometry in an Embree scene, as a C++ program would")
+      ->check(CLI::IsMember({"scene", "library"}))
+      ->capture_default_str();
   scaleRun->add_option("--lidar", scale.lidarAzimuths, "lidar azimuth steps (32 rings each)")
       ->check(app::wholeNumberIn(1, 1000000))
       ->capture_default_str();
@@ -192,9 +199,12 @@ int main(int argc, char** argv) {
       if (!csvPath.empty() || cli.count("--rays") > 0 || cli.count("--min-time") > 0)
         throw std::runtime_error("--csv, --rays and --min-time belong to speed-error and scaling");
       scale.mesh = scaleGeometry == "mesh";
+      scale.library = scaleBuild == "library";
       scale.seed = settings.seed;
       if (!writeScene.empty()) {
         if (!scale.sceneFile.empty()) throw std::runtime_error("--write-scene and --scene: one at a time");
+        if (scale.library)
+          throw std::runtime_error("--write-scene writes a file and builds nothing: no --build library");
         const auto start = std::chrono::steady_clock::now();
         const std::string written = writeFamilyScene(ScaleFamily{.seed = scale.seed}, scale.objects, writeScene);
         std::printf("%s: %zu objects written in %.2f s\n", written.c_str(), scale.objects,

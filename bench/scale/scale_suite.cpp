@@ -1,6 +1,7 @@
 #include "scale/scale_suite.h"
 
 #include "scale/scale_family.h"
+#include "scale/scale_library.h"
 
 #include "scene/camera.h"
 #include "scene/embree_scene.h"
@@ -83,21 +84,23 @@ struct Throughput {
   std::size_t hits = 0;
 };
 
-// Every ray's nearest hit on TBB's threads, `repetitions` times: the median rate.
-Throughput trace(const scene::EmbreeScene& scene, const std::vector<Ray>& rays, int repetitions) {
+// Every ray's nearest hit (`hits(ray)`: whether there is one) on TBB's threads, `repetitions`
+// times: the median rate.
+template <typename Hits>
+Throughput trace(const Hits& hits, const std::vector<Ray>& rays, int repetitions) {
   std::vector<double> rates;
   Throughput result;
   for (int r = 0; r < repetitions; ++r) {
     const auto start = Clock::now();
-    const std::size_t hits = tbb::parallel_reduce(
+    const std::size_t hitCount = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, rays.size(), 256), std::size_t{0},
         [&](const tbb::blocked_range<std::size_t>& range, std::size_t count) {
-          for (std::size_t i = range.begin(); i != range.end(); ++i) count += scene.nearest(rays[i]).has_value();
+          for (std::size_t i = range.begin(); i != range.end(); ++i) count += hits(rays[i]);
           return count;
         },
         [](std::size_t a, std::size_t b) { return a + b; });
     rates.push_back(double(rays.size()) / secondsSince(start) * 1e-6);
-    result.hits = hits;
+    result.hits = hitCount;
   }
   std::sort(rates.begin(), rates.end());
   result.medianMrays = rates[rates.size() / 2];
@@ -132,9 +135,62 @@ nlohmann::ordered_json shapeBreakdown(const Shape& shape) {
   return parts;
 }
 
+// The memory, one shape of each kind and the throughput of a built scene, into `record`. `built`
+// is an EmbreeScene or a LibraryScene; `shapeOf(i)` object i's Shape (for revolve's exact surfaces)
+// and `hits(ray)` whether the ray hits anything.
+template <typename Built, typename ShapeOf, typename Hits>
+void measureBuilt(nlohmann::ordered_json& record, const ScaleSettings& settings, const Built& built,
+                  const ShapeOf& shapeOf, const Hits& hits, const std::vector<Ray>& lidar) {
+  nlohmann::ordered_json memory;
+  memory["revolve_bytes"] = built.revolveBytes();
+  memory["embree_bytes"] = built.embreeBytes();
+  memory["embree_peak_bytes"] = built.embreePeakBytes();
+  memory["record_bytes"] = built.recordBytes();
+  memory["resident_bytes"] = residentBytes();
+  memory["peak_resident_bytes"] = peakResidentBytes();
+  const double counted = double(built.revolveBytes()) + double(built.embreeBytes()) + double(built.recordBytes());
+  memory["counted_bytes_per_object"] = counted / double(settings.objects);
+  record["memory"] = memory;
+  if (!settings.mesh) {
+    record["shape_bytes"] = {{"polyline", shapeBreakdown(shapeOf(0))}};
+    if (settings.objects > 1) record["shape_bytes"]["spline"] = shapeBreakdown(shapeOf(1));
+  }
+  const std::vector<Ray> camera = cameraRays(settings);
+  const Throughput cameraRate = trace(hits, camera, settings.repetitions);
+  const Throughput lidarRate = trace(hits, lidar, settings.repetitions);
+  record["camera"] = {{"rays", camera.size()}, {"hits", cameraRate.hits}, {"mrays_per_second", cameraRate.medianMrays}};
+  record["lidar"] = {{"rays", lidar.size()}, {"hits", lidarRate.hits}, {"mrays_per_second", lidarRate.medianMrays}};
+  record["repetitions"] = settings.repetitions;
+}
+
+// The family built by the library alone (scale_library.h): no description is made or held.
+nlohmann::ordered_json runLibrary(const ScaleSettings& settings) {
+  if (settings.mesh)
+    throw std::runtime_error("--build library builds exact surfaces; --geometry mesh needs --build scene");
+  if (!settings.sceneFile.empty()) throw std::runtime_error("--scene is read by the scene stack: --build scene");
+  nlohmann::ordered_json record;
+  record["objects"] = settings.objects;
+  record["geometry"] = "revolve";
+  record["build"] = "library";
+  record["points_per_profile"] = ScaleFamily::kPoints;
+  // Time to the first ray: the profiles and splines made and checked, their shapes, geometries
+  // and Embree's tree (all in parallel but the attaching), and one ray.
+  const auto start = Clock::now();
+  const LibraryScene scene(ScaleFamily{.seed = settings.seed}, settings.objects);
+  const std::vector<Ray> lidar = lidarRays(settings);
+  (void)scene.hits(lidar.front());
+  record["first_ray_seconds"] = secondsSince(start);
+  record["build_seconds"] = scene.buildSeconds();
+  measureBuilt(
+      record, settings, scene, [&](std::size_t i) -> const Shape& { return scene.shape(i); },
+      [&](const Ray& ray) { return scene.hits(ray); }, lidar);
+  return record;
+}
+
 }  // namespace
 
 nlohmann::ordered_json runScale(const ScaleSettings& given) {
+  if (given.library) return runLibrary(given);
   ScaleSettings settings = given;
   const ScaleFamily family{.seed = settings.seed};
   nlohmann::ordered_json record;
@@ -154,6 +210,7 @@ nlohmann::ordered_json runScale(const ScaleSettings& given) {
   }
   record["objects"] = settings.objects;
   record["geometry"] = settings.mesh ? "mesh" : "revolve";
+  record["build"] = "scene";
   record["points_per_profile"] = ScaleFamily::kPoints;
 
   // Meshes are matched to the error of a 64-point polyline against the smooth shape it samples:
@@ -171,7 +228,7 @@ nlohmann::ordered_json runScale(const ScaleSettings& given) {
   fromFile.reset();
   if (!record.contains("read_resident_bytes")) record["description_bytes"] = residentBytes() - residentBefore;
 
-  // Time to the first ray: the build (shapes in parallel, Embree's instances and tree) and one ray.
+  // Time to the first ray: the build (shapes in parallel, Embree's geometries and tree) and one ray.
   const auto start = Clock::now();
   scene::BuildSettings build;
   build.mesh = settings.mesh;
@@ -183,28 +240,10 @@ nlohmann::ordered_json runScale(const ScaleSettings& given) {
   record["build_seconds"] = scene.buildSeconds();
   description = io::SceneDescription{};  // the input is not the scene's memory
 
-  nlohmann::ordered_json memory;
-  memory["revolve_bytes"] = scene.revolveBytes();
-  memory["embree_bytes"] = scene.embreeBytes();
-  memory["embree_peak_bytes"] = scene.embreePeakBytes();
-  memory["record_bytes"] = scene.recordBytes();
-  memory["resident_bytes"] = residentBytes();
-  memory["peak_resident_bytes"] = peakResidentBytes();
-  const double counted = double(scene.revolveBytes()) + double(scene.embreeBytes()) + double(scene.recordBytes());
-  memory["counted_bytes_per_object"] = counted / double(settings.objects);
-  record["memory"] = memory;
-  if (!settings.mesh) {
-    record["shape_bytes"] = {{"polyline", shapeBreakdown(*scene.shapeOf(0))}};
-    if (settings.objects > 1) record["shape_bytes"]["spline"] = shapeBreakdown(*scene.shapeOf(1));
-  }
-
-  const std::vector<Ray> camera = cameraRays(settings);
-  const Throughput cameraRate = trace(scene, camera, settings.repetitions);
-  const Throughput lidarRate = trace(scene, lidar, settings.repetitions);
-  record["camera"] = {{"rays", camera.size()}, {"hits", cameraRate.hits}, {"mrays_per_second", cameraRate.medianMrays}};
-  record["lidar"] = {{"rays", lidar.size()}, {"hits", lidarRate.hits}, {"mrays_per_second", lidarRate.medianMrays}};
+  measureBuilt(
+      record, settings, scene, [&](std::size_t i) -> const Shape& { return *scene.shapeOf(std::uint32_t(i)); },
+      [&](const Ray& ray) { return scene.nearest(ray).has_value(); }, lidar);
   record["refused_rays"] = scene.refusedRays();
-  record["repetitions"] = settings.repetitions;
   return record;
 }
 
@@ -215,17 +254,18 @@ void printScale(std::FILE* out, const nlohmann::ordered_json& record) {
                  record["read_seconds"].get<double>(), record["read_resident_bytes"].get<double>() * 1e-6);
   }
   std::fprintf(out,
-               "%s, %zu objects: build %.2f s, first ray %.2f s; memory %.0f bytes an object counted "
+               "%s (%s), %zu objects: build %.2f s, first ray %.2f s; memory %.0f bytes an object counted "
                "(revolve %.1f MB, Embree %.1f MB, records %.1f MB), peak resident %.1f MB; camera %.2f Mrays/s "
                "(%zu of %zu hit), lidar %.2f Mrays/s (%zu of %zu hit)\n",
-               record["geometry"].get<std::string>().c_str(), record["objects"].get<std::size_t>(),
-               record["build_seconds"].get<double>(), record["first_ray_seconds"].get<double>(),
-               memory["counted_bytes_per_object"].get<double>(), memory["revolve_bytes"].get<double>() * 1e-6,
-               memory["embree_bytes"].get<double>() * 1e-6, memory["record_bytes"].get<double>() * 1e-6,
-               memory["peak_resident_bytes"].get<double>() * 1e-6, record["camera"]["mrays_per_second"].get<double>(),
-               record["camera"]["hits"].get<std::size_t>(), record["camera"]["rays"].get<std::size_t>(),
-               record["lidar"]["mrays_per_second"].get<double>(), record["lidar"]["hits"].get<std::size_t>(),
-               record["lidar"]["rays"].get<std::size_t>());
+               record["geometry"].get<std::string>().c_str(),
+               record["build"] == "library" ? "the library alone" : "the scene stack",
+               record["objects"].get<std::size_t>(), record["build_seconds"].get<double>(),
+               record["first_ray_seconds"].get<double>(), memory["counted_bytes_per_object"].get<double>(),
+               memory["revolve_bytes"].get<double>() * 1e-6, memory["embree_bytes"].get<double>() * 1e-6,
+               memory["record_bytes"].get<double>() * 1e-6, memory["peak_resident_bytes"].get<double>() * 1e-6,
+               record["camera"]["mrays_per_second"].get<double>(), record["camera"]["hits"].get<std::size_t>(),
+               record["camera"]["rays"].get<std::size_t>(), record["lidar"]["mrays_per_second"].get<double>(),
+               record["lidar"]["hits"].get<std::size_t>(), record["lidar"]["rays"].get<std::size_t>());
   if (record.contains("shape_bytes")) {
     for (const auto& [kind, parts] : record["shape_bytes"].items()) {
       std::fprintf(out, "  one %s shape:", kind.c_str());

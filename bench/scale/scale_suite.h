@@ -17,6 +17,9 @@ namespace revolve::bench {
 struct ScaleSettings {
   std::size_t objects = 1000;
   bool mesh = false;  // Embree meshes instead of revolve's exact surfaces
+  // Built by the library alone (scale_library.h: each object's Shape and placed Geometry in an
+  // Embree scene) instead of through the tools' scene stack (a scene description, EmbreeScene).
+  bool library = false;
   int cameraWidth = 512, cameraHeight = 256;
   int lidarAzimuths = 2048, lidarElevations = 32;  // a spinning lidar's beams: 32 rings, +-15 degrees
   int repetitions = 5;                             // of each throughput measurement (median reported)
