@@ -94,25 +94,37 @@ ShadingNormals shadingNormalsOf(const io::SceneProfile& source) {
 
 // One profile built into Embree, whichever objects show it.
 struct EmbreeScene::Prototype {
-  std::optional<Shape> shape;             // traced exactly
-  std::optional<Profile> profile;         // the polyline of a mesh or cone curve (and a scene file's profile)
-  std::optional<ShadingNormals> normals;  // a scene file's profiles: smooth shading
-  std::optional<ConeCurveGeometry> cone;
-  RTCGeometry mesh = nullptr;  // retained while the prototype lives
-  const float* meshVertices = nullptr;
-  const std::uint32_t* meshIndices = nullptr;
-  std::uint32_t slices = 0;
-  // A mesh's or cone curve's scene, which its objects instance. An exact surface has none: each of
-  // its objects is a placed revolve::Geometry of its own (Instance::exact).
-  app::Scene scene;
+  // What a mesh or Embree's cone curve holds, apart: an exact surface, of which a scene may hold a
+  // million, pays 8 bytes for it.
+  struct Approximation {
+    Profile profile;  // the polyline meshed or traced as cones
+    std::optional<ConeCurveGeometry> cone;
+    RTCGeometry mesh = nullptr;  // retained while the prototype lives
+    const float* meshVertices = nullptr;
+    const std::uint32_t* meshIndices = nullptr;
+    std::uint32_t slices = 0;
+    app::Scene scene;  // which the objects instance
+    explicit Approximation(Profile polyline) : profile(std::move(polyline)) {}
+    ~Approximation() {
+      scene.reset();
+      if (mesh != nullptr) rtcReleaseGeometry(mesh);
+    }
+    Approximation(const Approximation&) = delete;
+    Approximation& operator=(const Approximation&) = delete;
+  };
+
+  std::optional<Shape> shape;                     // traced exactly
+  std::unique_ptr<const ShadingNormals> normals;  // a scene file's profiles: smooth shading
+  // A mesh or cone curve (none for an exact surface). An exact surface has no scene of its own:
+  // each of its objects is a placed revolve::Geometry (Instance::exact).
+  std::unique_ptr<Approximation> approximation;
 
   // A scene file's profile, as `settings` build it. An exact surface keeps no copy of the polyline
   // (its shape holds it), and an exact spline no shading normals (its geometric normal is smooth
   // already): a scene of a million objects pays for neither.
   Prototype(const io::SceneProfile& source, RTCDevice device, const BuildSettings& settings) {
     const bool exact = !settings.mesh && !settings.embreeCone;
-    if (!exact) profile.emplace(source.polyline());
-    if (!exact || !source.spline) normals.emplace(shadingNormalsOf(source));
+    if (!exact || !source.spline) normals = std::make_unique<const ShadingNormals>(shadingNormalsOf(source));
     if (exact) {
       if (source.spline) {
         shape.emplace(*source.spline, settings.options);  // the curve itself, its normals smooth already
@@ -121,30 +133,31 @@ struct EmbreeScene::Prototype {
       }
       return;
     }
-    scene = app::newScene(device);
+    approximation = std::make_unique<Approximation>(source.polyline());
+    Approximation& a = *approximation;
+    a.scene = app::newScene(device);
     if (settings.mesh) {
-      slices = settings.slices;
-      mesh = newTessellatedGeometry(device, *profile, slices);
-      meshVertices = static_cast<const float*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_VERTEX, 0));
-      meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(mesh, RTC_BUFFER_TYPE_INDEX, 0));
-      if (meshVertices == nullptr || meshIndices == nullptr) throw std::runtime_error("Embree gave no mesh buffers");
-      rtcAttachGeometry(scene.get(), mesh);
+      a.slices = settings.slices;
+      a.mesh = newTessellatedGeometry(device, a.profile, a.slices);
+      a.meshVertices = static_cast<const float*>(rtcGetGeometryBufferData(a.mesh, RTC_BUFFER_TYPE_VERTEX, 0));
+      a.meshIndices = static_cast<const std::uint32_t*>(rtcGetGeometryBufferData(a.mesh, RTC_BUFFER_TYPE_INDEX, 0));
+      if (a.meshVertices == nullptr || a.meshIndices == nullptr)
+        throw std::runtime_error("Embree gave no mesh buffers");
+      rtcAttachGeometry(a.scene.get(), a.mesh);
     } else {
-      cone.emplace(device, *profile);
-      rtcAttachGeometry(scene.get(), cone->handle());
+      a.cone.emplace(device, a.profile);
+      rtcAttachGeometry(a.scene.get(), a.cone->handle());
     }
-    rtcCommitScene(scene.get());
+    rtcCommitScene(a.scene.get());
   }
   // A shape traced exactly.
   explicit Prototype(Shape traced) : shape(std::move(traced)) {}
-  ~Prototype() {
-    if (mesh != nullptr) rtcReleaseGeometry(mesh);
-  }
-  Prototype(const Prototype&) = delete;
-  Prototype& operator=(const Prototype&) = delete;
 
+  const ConeCurveGeometry* cone() const noexcept {
+    return approximation && approximation->cone ? &*approximation->cone : nullptr;
+  }
   // The profile's polyline for recovering segments, u and v from a point (meshes, cone curves).
-  const Profile& polyline() const { return profile ? *profile : shape->profile(); }
+  const Profile& polyline() const { return approximation ? approximation->profile : shape->profile(); }
 };
 
 // An object: a prototype where its placement puts it.
@@ -384,7 +397,7 @@ std::uint32_t EmbreeScene::attach(std::size_t index) {
     rtcAttachGeometryByID(top_.get(), instance.exact->handle(), id);
   } else {
     RTCGeometry geometry = rtcNewGeometry(device_.get(), RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geometry, prototypes_[instance.prototype]->scene.get());
+    rtcSetGeometryInstancedScene(geometry, prototypes_[instance.prototype]->approximation->scene.get());
     const std::array<float, 12> columns = instance.placement.embreeColumns();
     rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, columns.data());
     rtcCommitGeometry(geometry);
@@ -651,11 +664,11 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Instance& instance, const
   hit.material = instance.material;
   hit.object = instance.id;
   Vec3 objectNormal, shadingNormal;
-  if (prototype.cone) {
+  if (prototype.cone() != nullptr) {
     // Embree's cone curve: its Ng turned to revolve's side, the profile segment and u, v recovered
     // from the point. Its single-precision hit comes with no error bound: the point's own distance
     // from its cone (in double, object space) stands in for one, with the rounding of o + t d.
-    const ConeCurveGeometry& cone = *prototype.cone;
+    const ConeCurveGeometry& cone = *prototype.cone();
     const Vec3 ng{rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z};
     const std::uint32_t segment = cone.profileSegment(rayHit.hit.primID, rayHit.hit.u, ng);
     hit.point = ray.origin + hit.t * ray.direction;
@@ -672,7 +685,7 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Instance& instance, const
     const float rounding =
         float(gamma(3)) * app::maxComponent(app::absolute(ray.origin) + app::absolute(hit.t * ray.direction));
     hit.pointError = {residual + rounding, residual + rounding, residual + rounding};
-  } else if (prototype.mesh == nullptr) {
+  } else if (!prototype.approximation) {
     // Exact surface: Ng, u, v and primID in revolve's conventions (object space).
     hit.exactSurface = true;
     hit.point = ray.origin + hit.t * ray.direction;
@@ -687,9 +700,10 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Instance& instance, const
   } else {
     // Mesh: the point from the triangle's barycentrics (pbrt-v4: within gamma(7) sum |b_i p_i|),
     // then revolve's segment, u and v recovered from it so that shading matches the exact surface.
-    const std::uint32_t* index = prototype.meshIndices + 3 * rayHit.hit.primID;
+    const Prototype::Approximation& mesh = *prototype.approximation;
+    const std::uint32_t* index = mesh.meshIndices + 3 * rayHit.hit.primID;
     const auto vertex = [&](int k) {
-      const float* v = prototype.meshVertices + 3 * index[k];
+      const float* v = mesh.meshVertices + 3 * index[k];
       return Vec3{v[0], v[1], v[2]};
     };
     const Vec3 p0 = vertex(0), p1 = vertex(1), p2 = vertex(2);
@@ -698,7 +712,7 @@ std::optional<WorldHit> EmbreeScene::instanceHit(const Instance& instance, const
     const Vec3 localError =
         float(gamma(7)) * (app::absolute(b0 * p0) + app::absolute(b1 * p1) + app::absolute(b2 * p2));
     objectNormal = app::cross(p1 - p0, p2 - p0);  // outwards for a profile listed bottom to top, as Ng
-    const std::uint32_t segment = rayHit.hit.primID / (2 * prototype.slices);
+    const std::uint32_t segment = rayHit.hit.primID / (2 * mesh.slices);
     const auto [u, v] = surfaceParameters(prototype.polyline(), segment, local);
     shadingNormal = prototype.normals->normal(segment, u, v);
     // World point L p + T: its own rounding (gamma(3) (|L| |p| + |T|)) plus the object error through |L|.
@@ -783,8 +797,17 @@ std::size_t EmbreeScene::recordBytes() const noexcept {
     if (instance.exact) geometryBytes += instance.exact->memoryBytes();
     if (instance.filtered) geometryBytes += instance.filtered->memoryBytes();
   }
-  return instances_.capacity() * sizeof(Instance) + geometries_.capacity() * sizeof(Geometry) +
-         prototypes_.capacity() * sizeof(std::unique_ptr<Prototype>) + prototypes_.size() * sizeof(Prototype) +
+  std::size_t prototypeBytes = prototypes_.capacity() * sizeof(std::unique_ptr<Prototype>);
+  for (const auto& prototype : prototypes_) {
+    prototypeBytes += sizeof(Prototype) + (prototype->normals ? sizeof(ShadingNormals) : 0);
+    // A mesh's or cone curve's record and polyline (its triangles and cones are Embree's).
+    if (const Prototype::Approximation* approximation = prototype->approximation.get()) {
+      const Profile& polyline = approximation->profile;
+      prototypeBytes += sizeof(Prototype::Approximation) + polyline.points().size() * sizeof(Point2) +
+                        polyline.arcLength().size() * sizeof(double);
+    }
+  }
+  return instances_.capacity() * sizeof(Instance) + geometries_.capacity() * sizeof(Geometry) + prototypeBytes +
          geometryBytes;
 }
 
