@@ -28,42 +28,82 @@ bool insideMeridian(std::span<const Point2> points, double rho, double z) {
   return inside;
 }
 
+// The extent of a profile's curve, as its box's largest r and its z range.
+struct Extent {
+  double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
+  explicit Extent(std::span<const Point2> points) {
+    for (const Point2 p : points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
+  }
+  Extent() = default;
+};
+
+// Its world size: the largest extent of its placed box along a world axis.
+double placedSize(const Extent& extent, const app::Matrix3d& linear) {
+  double size = 0;
+  for (int a = 0; a < 3; ++a) {
+    // The box's extent along world axis a: |L_a0| + |L_a1| times 2 rmax, plus |L_a2| (zmax - zmin).
+    size = std::max(size, (std::abs(linear[a][0]) + std::abs(linear[a][1])) * 2 * extent.rMax +
+                              std::abs(linear[a][2]) * (extent.zHigh - extent.zLow));
+  }
+  return size;
+}
+
 }  // namespace
 
 std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& scene, bool camera) {
+  // An exact spline's polyline is drawn only for the checks that need its points (SceneProfile::
+  // polyline: a scene of a million splines would otherwise draw them all). Its Bezier control
+  // points decide the rest: every one on the axis exactly when the curve is (a cubic's Bernstein
+  // coefficients vanish exactly when it does), and the points it passes through (its pieces' ends)
+  // span no more than the curve, so an object whose ends span more than a float step does too.
   std::vector<std::string> warnings;
-  io::drawPolylines(scene);  // the checks below read every profile's polyline
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     const io::SceneObject& object = scene.objects[i];
-    const Profile& profile = scene.profiles[object.profile].polyline();
+    const io::SceneProfile& source = scene.profiles[object.profile];
     std::string name = scene.file + ": objects[" + std::to_string(i) + "]";
     if (!object.name.empty()) name += " \"" + object.name + "\"";
-    const std::span<const Point2> points = profile.points();
+    const std::span<const Point2> bounding = io::boundingPoints(source);
 
-    if (std::all_of(points.begin(), points.end(), [](Point2 p) { return p.r == 0; })) {
-      warnings.push_back(name + ": every point of profile \"" + scene.profiles[object.profile].name +
+    if (std::all_of(bounding.begin(), bounding.end(), [](Point2 p) { return p.r == 0; })) {
+      warnings.push_back(name + ": every point of profile \"" + source.name +
                          "\" lies on the axis (r = 0): the surface has no area and nothing can hit it");
       continue;
     }
     // Its world size against one float step (2^-23 relative) at its distance from the origin.
-    double rMax = 0, zLow = INFINITY, zHigh = -INFINITY;
-    for (const Point2 p : points) rMax = std::max(rMax, p.r), zLow = std::min(zLow, p.z), zHigh = std::max(zHigh, p.z);
     const app::Matrix3d linear = app::linearPart(object.transform);
-    double size = 0;
-    for (int a = 0; a < 3; ++a) {
-      // The box's extent along world axis a: |L_a0| + |L_a1| times 2 rmax, plus |L_a2| (zmax - zmin).
-      size = std::max(
-          size, (std::abs(linear[a][0]) + std::abs(linear[a][1])) * 2 * rMax + std::abs(linear[a][2]) * (zHigh - zLow));
-    }
     const auto& t = object.transform.translate;
     const double distance = std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])});
-    if (size <= distance * 0x1p-23) {
+    const double step = distance * 0x1p-23;
+    Extent extent;
+    if (!source.spline) {
+      extent = Extent(source.polyline().points());
+    } else {
+      // The points the curve passes through, its pieces' ends; drawn only when those are small.
+      const std::span<const Point2> bezier = source.spline->bezier();
+      for (std::size_t k = 0; k < bezier.size(); k += 3) {
+        const Point2 p = bezier[k];
+        extent.rMax = std::max(extent.rMax, p.r), extent.zLow = std::min(extent.zLow, p.z);
+        extent.zHigh = std::max(extent.zHigh, p.z);
+      }
+      if (placedSize(extent, linear) <= step) extent = Extent(source.polyline().points());
+    }
+    const double size = placedSize(extent, linear);
+    if (size <= step) {
       warnings.push_back(name + ": placed, it spans " + numberText(size) +
                          ", less than one float step at its distance " + numberText(distance) +
                          " from the origin: Embree cannot place it, and its hits are lost to rounding");
       continue;
     }
-    if (camera && profile.closed()) {
+    // Closed as Profile::closed says: its ends meet, or both lie on the axis (a spline's curve
+    // starts and ends at its first and last Bezier control points).
+    bool closed = false;
+    if (source.spline) {
+      const Point2 a = source.spline->bezier().front(), b = source.spline->bezier().back();
+      closed = (a.r == b.r && a.z == b.z) || (a.r == 0 && b.r == 0);
+    } else {
+      closed = source.polyline().closed();
+    }
+    if (camera && closed) {
       // The camera in the object's frame: L^-1 (from - T), L^-1 = S^-1 R^T.
       const app::Matrix3d rotation = app::rotationOf(object.transform);
       const auto& from = scene.camera.from;
@@ -72,7 +112,7 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
       for (int r = 0; r < 3; ++r) {
         local[r] = (rotation[0][r] * d[0] + rotation[1][r] * d[1] + rotation[2][r] * d[2]) / object.transform.scale[r];
       }
-      if (insideMeridian(points, std::hypot(local[0], local[1]), local[2])) {
+      if (insideMeridian(source.polyline().points(), std::hypot(local[0], local[1]), local[2])) {
         warnings.push_back(name + ": the camera (camera.from) lies inside it: the view shows its inside, or nothing");
       }
     }

@@ -115,5 +115,49 @@ TEST(DegenerateObjectsTest, AnAxisOnlyProfileAndAnObjectBelowFloatResolutionAreN
       HasSubstr("objects[1] \"speck\": placed, it spans 3.05e-05, less than one float step at its distance 1e+06"));
 }
 
+// Exact splines are judged by their curves, and drawn (SceneProfile::polyline) only where a check
+// needs the curve's points: a closed one when the camera is asked about, a tiny one to measure it.
+// The ball: two cubic quarter circles (inner points at 0.5523 of the radius, within 3e-4 of the
+// circle), from the bottom pole to the top, both ends on the axis (closed); the cup: the lower
+// quarter alone (open).
+TEST(DegenerateObjectsTest, ExactSplinesAreJudgedByTheirCurvesAndDrawnOnlyWhereNeeded) {
+  const double k = 0.5523;
+  const std::vector<Point2> ball{{0, -1}, {k, -1}, {1, -k}, {1, 0}, {1, k}, {k, 1}, {0, 1}};
+  const std::vector<Point2> cup{{0, -1}, {k, -1}, {1, -k}, {1, 0}};
+  app::Transform speck = at(1e6, 0, 0);
+  speck.scale = {0x1p-16, 0x1p-16, 0x1p-16};
+  const auto sceneWith = [&](const std::vector<Point2>& points, const app::Transform& placed) {
+    io::SceneDescription scene = sceneOf({});
+    scene.profiles.push_back({.name = "curve"});
+    scene.profiles.back().spline.emplace(SplineKind::bezier, points);
+    scene.objects.push_back({"curved", 0, 0, placed});
+    return scene;
+  };
+  const auto drawn = [](const io::SceneDescription& scene) { return scene.profiles[0].drawing->polyline.has_value(); };
+
+  // Nothing to say without a camera, and nothing drawn.
+  io::SceneDescription ballScene = sceneWith(ball, at(4, -1, 2));
+  EXPECT_TRUE(scene::degenerateObjectWarnings(ballScene, false).empty());
+  EXPECT_FALSE(drawn(ballScene));
+  // With the camera inside the ball, or just outside it.
+  ballScene.camera.from = {4 + 0.95, -1, 2};
+  EXPECT_THAT(scene::degenerateObjectWarnings(ballScene, true),
+              ::testing::ElementsAre("test scene: objects[0] \"curved\": the camera (camera.from) lies inside it: the "
+                                     "view shows its inside, or nothing"));
+  EXPECT_TRUE(drawn(ballScene));
+  ballScene.camera.from = {4 + 1.05, -1, 2};
+  EXPECT_TRUE(scene::degenerateObjectWarnings(ballScene, true).empty());
+  // The open cup has no inside: not drawn even with the camera in its hollow.
+  io::SceneDescription cupScene = sceneWith(cup, at(4, -1, 2));
+  cupScene.camera.from = {4, -1, 2 - 0.5};
+  EXPECT_TRUE(scene::degenerateObjectWarnings(cupScene, true).empty());
+  EXPECT_FALSE(drawn(cupScene));
+  // The ball 3.05e-5 across at 1e6, below float's step there, as the polyline pole above.
+  const io::SceneDescription speckScene = sceneWith(ball, speck);
+  const std::vector<std::string> warnings = scene::degenerateObjectWarnings(speckScene, false);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("objects[0] \"curved\": placed, it spans 3.05e-05, less than one float step"));
+}
+
 }  // namespace
 }  // namespace revolve
