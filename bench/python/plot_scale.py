@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Draws docs/performance.md's figure of scenes of many distinct objects from scale_ladder.py's JSON
 (Debian's python3-matplotlib): memory, build time and throughput against the number of objects,
-revolve's exact surfaces beside Embree meshes at matched error, the median of each configuration's
-runs; and prints the table the docs quote.
+revolve's exact surfaces (built by the library alone, and through the tools' scene stack) beside
+Embree meshes at matched error, the median of each configuration's runs; and prints the table the
+docs quote.
 
     bench/python/plot_scale.py out/scale/scale.json docs/scale_objects.png
 """
@@ -16,16 +17,22 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {
-    "revolve": dict(color="tab:blue", marker="o", label="revolve, exact"),
-    "mesh": dict(color="tab:red", marker="s", label="Embree meshes, matched error"),
+    "revolve, library": dict(color="tab:green", marker="^", label="revolve, exact, the library alone"),
+    "revolve, scene": dict(color="tab:blue", marker="o", label="revolve, exact, the scene stack"),
+    "mesh, scene": dict(color="tab:red", marker="s", label="Embree meshes, matched error"),
 }
+
+
+def configuration(run):
+    """The run's geometry and how it was built (runs from before --build were the scene stack's)."""
+    return run["geometry"] + ", " + run.get("build", "scene")
 
 
 def medians(runs):
     """One row a (geometry, objects): the median of each figure over the runs."""
     groups = {}
     for run in runs:
-        groups.setdefault((run["geometry"], run["objects"]), []).append(run)
+        groups.setdefault((configuration(run), run["objects"]), []).append(run)
     rows = []
     for (geometry, objects), group in sorted(groups.items()):
         median = lambda f: statistics.median(f(r) for r in group)  # noqa: E731
@@ -50,7 +57,7 @@ def main(source, target):
     with open(source) as f:
         document = json.load(f)
     rows = medians(document["runs"])
-    print("| geometry | objects | build s | first ray s | bytes/object (counted) | peak RSS MB | camera Mrays/s | lidar Mrays/s | load |")
+    print("| built | objects | build s | first ray s | bytes/object (counted) | peak RSS MB | camera Mrays/s | lidar Mrays/s | load |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
         print(
@@ -86,7 +93,7 @@ def main(source, target):
         ax.set_title(title)
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=8)
-    axes[2].legend(fontsize=7)
+    axes[2].legend(fontsize=6, loc="lower left")
     figure.tight_layout()
     figure.savefig(target, dpi=110)
 
