@@ -953,6 +953,118 @@ TEST(PlacedGeometryTest, AFilterRejectionFindsTheNextHitAndTheRayComesBackUnchan
   EXPECT_GT(secondHits, 100u);
 }
 
+// Shadow packets of 16 on a placed geometry (a placement exact in float): a lane on reports
+// occlusion exactly when the pure query on its object-space ray hits; a lane off, and every lane's
+// ray, come back as the caller gave them.
+TEST(PlacedGeometryTest, OccludedPacketsAnswerAsThePureQueryAndLeaveLanesOffUntouched) {
+  const revolve::Placement placement = placed::quarterTurn(2, 3, {0, 0, 0});
+  placed::PlacedScene s(Shape(Spline(SplineKind::catmullRom, testing::hollowVase())), placement);
+  std::mt19937_64 random(1212);
+  const std::vector<Ray> objectRays = testing::incoherentRays(s.shape, random, 1600, 2.0);
+  std::size_t occluded = 0;
+  for (std::size_t first = 0; first + 16 <= objectRays.size(); first += 16) {
+    alignas(64) RTCRay16 packet{};
+    alignas(64) int valid[16];
+    for (int k = 0; k < 16; ++k) {
+      const Ray& o = objectRays[first + std::size_t(k)];
+      const Vec3 origin = placed::apply(placement, o.origin, true),
+                 direction = placed::apply(placement, o.direction, false);
+      valid[k] = k % 3 == 1 ? 0 : -1;
+      packet.org_x[k] = origin.x, packet.org_y[k] = origin.y, packet.org_z[k] = origin.z;
+      packet.dir_x[k] = direction.x, packet.dir_y[k] = direction.y, packet.dir_z[k] = direction.z;
+      packet.tnear[k] = o.tnear, packet.tfar[k] = o.tfar;
+      packet.mask[k] = ~0u, packet.flags[k] = 0, packet.time[k] = 0;
+    }
+    const RTCRay16 given = packet;
+    embree::RayQuery query;
+    query.occluded(valid, s.scene.get(), packet);
+    for (int k = 0; k < 16; ++k) {
+      const Ray& o = objectRays[first + std::size_t(k)];
+      EXPECT_EQ(packet.org_x[k], given.org_x[k]);
+      EXPECT_EQ(packet.dir_y[k], given.dir_y[k]);
+      EXPECT_EQ(packet.tnear[k], given.tnear[k]);
+      if (valid[k] == 0) {
+        EXPECT_EQ(packet.tfar[k], given.tfar[k]) << "lane " << k << " was off";
+        continue;
+      }
+      const bool blocked = packet.tfar[k] == -std::numeric_limits<float>::infinity();
+      EXPECT_EQ(blocked, intersect(s.shape, o).has_value()) << "ray " << first + std::size_t(k);
+      if (!blocked) EXPECT_EQ(packet.tfar[k], given.tfar[k]);
+      occluded += blocked;
+    }
+  }
+  EXPECT_GT(occluded, 300u);
+}
+
+// A placed geometry counting its work counts it as an unplaced one does: a call for each ray that
+// reaches its box, each like the pure query on the object-space ray.
+TEST(PlacedGeometryTest, CountingAccumulatesWorkAsUnplaced) {
+  const revolve::Placement placement = placed::quarterTurn(0.5, 1, {0, 0, 0});
+  DevicePtr device = newDevice();
+  const Shape shape{Profile(testing::sphereLike(1.0, 256))};
+  Geometry geometry(device.get(), shape, placement, Geometry::Options{.countStats = true});
+  ScenePtr scene(rtcNewScene(device.get()));
+  rtcAttachGeometry(scene.get(), geometry.handle());
+  rtcCommitScene(scene.get());
+  std::mt19937_64 random(808);
+  Stats pure;
+  for (const Ray& objectRay : testing::incoherentRays(shape, random, 1000)) {
+    const Ray worldRay{placed::apply(placement, objectRay.origin, true),
+                       placed::apply(placement, objectRay.direction, false), objectRay.tnear, objectRay.tfar};
+    embree::RayQuery query;
+    RTCRayHit rh = toRayHit(worldRay);
+    query.intersect(scene.get(), rh);
+    (void)intersect(shape, objectRay, &pure);  // for its counters only
+  }
+  const Stats counted = geometry.stats();
+  EXPECT_GT(counted.rays, 900u);
+  EXPECT_LE(counted.rays, pure.rays);
+  EXPECT_GT(counted.quadratics, 0u);
+  EXPECT_LE(counted.quadratics, pure.quadratics);
+  EXPECT_LE(counted.nodesVisited, pure.nodesVisited);
+}
+
+// A point query through an Embree instance (a translation by (0, 3, 0)) of a scene holding a placed
+// geometry (a quarter turn, scale 2, a shift by (5, 0, 0)): both maps are carried, and the distance
+// is twice the object-space one, as from the long-double meridian distance.
+TEST(PlacedGeometryTest, ClosestPointThroughAnInstanceAbovePlacedGeometry) {
+  const std::vector<Point2> points = testing::hollowVase();
+  const revolve::Placement placement = placed::quarterTurn(2, 1, {5, 0, 0});
+  placed::PlacedScene s(Shape(Profile(points)), placement);
+  ScenePtr world(rtcNewScene(s.device.get()));
+  RTCGeometry instance = rtcNewGeometry(s.device.get(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, s.scene.get());
+  const float xfm[12] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 3, 0};
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+  rtcCommitGeometry(instance);
+  const unsigned instID = rtcAttachGeometry(world.get(), instance);
+  rtcReleaseGeometry(instance);
+  rtcCommitScene(world.get());
+  struct Lookup {
+    const Geometry* geometry;
+    unsigned geomID;
+  } lookup{&s.geometry, s.geomID};
+  const GeometryLookup find = [](void* user, unsigned, unsigned id) -> const Geometry* {
+    auto* l = static_cast<Lookup*>(user);
+    return id == l->geomID ? l->geometry : nullptr;
+  };
+  std::mt19937_64 random(1313);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.5f);
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 p{coordinate(random), coordinate(random), coordinate(random)};
+    const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
+    const Vec3 w{-2 * p.y + 5, 2 * p.x + 3, 2 * p.z};  // exact in float
+    const std::optional<ScenePoint> found =
+        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(found->instID, instID);
+    EXPECT_EQ(found->geomID, s.geomID);
+    EXPECT_NEAR(found->distance, 2 * expected, 4e-6 * (1.0 + expected));
+    const Vec3 q{(found->point.y - 3) / 2, -(found->point.x - 5) / 2, found->point.z / 2};
+    EXPECT_NEAR(double(reference::meridianDistance(points, q.x, q.y, q.z)), 0.0, 2e-6);
+  }
+}
+
 TEST(PlacedGeometryTest, RefusesPlacementsThatAreNotFiniteOrSingular) {
   DevicePtr device = newDevice();
   const Shape shape{Profile(testing::hollowVase())};
