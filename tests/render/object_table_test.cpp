@@ -7,7 +7,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace revolve {
@@ -218,6 +221,50 @@ TEST(ObjectTableTest, TheFirstFailingObjectIsReported) {
   const std::string profiles = replaced(kProfiles, "0,0.3,1", "0,-0.3,1");  // object 0: r < 0
   const std::string objects = replaced(kObjects, "2,linear", "2,cubic");    // object 2: a bad line
   EXPECT_THAT(errorOf(profiles, objects), HasSubstr("p.csv:4: "));
+}
+
+// Tables longer than a build batch (4,096 objects): 8,197 objects cross two batch boundaries and
+// read back in order, each as the formula that wrote it says; a bad object in the second batch is
+// named by its line, and of two bad objects in different batches the earlier one.
+TEST(ObjectTableTest, TablesCrossingBuildBatchesReadBackInOrder) {
+  constexpr std::size_t kCount = 2 * 4096 + 5;
+  const auto radius = [](std::size_t i) { return 0.125 + double(i) * 0x1p-20; };  // exact in decimal text
+  const auto tables = [&](std::size_t badObject, std::size_t secondBad) {
+    std::string profiles = "object,r,z\n", objects = "object,spline,x,y,z,axis_x,axis_y,axis_z,degrees,scale\n";
+    char line[160];
+    for (std::size_t i = 0; i < kCount; ++i) {
+      const double r = i == badObject || i == secondBad ? -radius(i) : radius(i);
+      std::snprintf(line, sizeof line, "%zu,0,0\n%zu,%.17g,0\n%zu,%.17g,1\n%zu,0,1\n", i, i, r, i, r, i);
+      profiles += line;
+      std::snprintf(line, sizeof line, "%zu,linear,%zu,0,0,0,0,1,0,1\n", i, i);
+      objects += line;
+    }
+    return std::pair{profiles, objects};
+  };
+  constexpr std::size_t kNone = kCount;
+  {
+    const auto [profiles, objects] = tables(kNone, kNone);
+    const testing::ScratchDirectory dir;
+    dir.write("scene.json", kTableScene);
+    dir.write("p.csv", profiles);
+    dir.write("o.csv", objects);
+    const WorkingDirectory inside(dir.path());
+    const io::SceneDescription scene = io::readScene("scene.json");
+    ASSERT_EQ(scene.objects.size(), 1 + kCount);
+    for (std::size_t i = 0; i < kCount; ++i) {
+      const io::SceneObject& object = scene.objects[1 + i];
+      ASSERT_EQ(object.transform.translate, (app::Vec3d{double(i), 0, 0})) << i;
+      const std::span<const Point2> points = scene.profiles[object.profile].profile->points();
+      ASSERT_EQ(points.size(), 4u) << i;
+      ASSERT_EQ(points[1].r, radius(i)) << i;
+      ASSERT_EQ(points[2].z, 1.0) << i;
+    }
+  }
+  // Object k's profile lines are 2 + 4 k to 5 + 4 k: its second point, line 3 + 4 k, has r < 0.
+  const auto [profiles, objects] = tables(4100, kNone);
+  EXPECT_THAT(errorOf(profiles, objects), HasSubstr("p.csv:" + std::to_string(3 + 4 * 4100) + ": "));
+  const auto [profiles2, objects2] = tables(4100, 8195);
+  EXPECT_THAT(errorOf(profiles2, objects2), HasSubstr("p.csv:" + std::to_string(3 + 4 * 4100) + ": "));
 }
 
 }  // namespace
