@@ -487,6 +487,16 @@ TEST(EmbreeStatsTest, CountingGeometryAccumulatesWork) {
   EXPECT_LE(embree.nodesVisited, pure.nodesVisited);
 }
 
+// closestPoint's lookup for a scene of one revolve geometry (under geomID, in any instance).
+struct OneGeometryLookup {
+  const Geometry* geometry;
+  unsigned geomID;
+  static const Geometry* find(void* user, unsigned, unsigned id) {
+    const auto* lookup = static_cast<const OneGeometryLookup*>(user);
+    return id == lookup->geomID ? lookup->geometry : nullptr;
+  }
+};
+
 // Point queries: the closest surface point through Embree (also through a similarity instance)
 // against the long-double meridian distance.
 TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
@@ -507,14 +517,7 @@ TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
   rtcReleaseGeometry(instance);
   rtcCommitScene(world.get());
 
-  struct Lookup {
-    const Geometry* geometry;
-    unsigned geomID;
-  } lookup{&geometry, geomID};
-  const GeometryLookup find = [](void* user, unsigned, unsigned id) -> const Geometry* {
-    auto* l = static_cast<Lookup*>(user);
-    return id == l->geomID ? l->geometry : nullptr;
-  };
+  OneGeometryLookup lookup{&geometry, geomID};
 
   std::mt19937_64 random(909);
   std::uniform_real_distribution<float> coordinate(-1.0f, 1.5f);
@@ -522,7 +525,7 @@ TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
     const Vec3 p{coordinate(random), coordinate(random), coordinate(random)};
     const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
     const std::optional<ScenePoint> direct =
-        closestPoint(object.get(), p, std::numeric_limits<float>::infinity(), find, &lookup);
+        closestPoint(object.get(), p, std::numeric_limits<float>::infinity(), OneGeometryLookup::find, &lookup);
     ASSERT_TRUE(direct.has_value());
     EXPECT_NEAR(direct->distance, expected, 1e-6 * (1.0 + expected));
     EXPECT_EQ(direct->instID, RTC_INVALID_GEOMETRY_ID);
@@ -531,7 +534,7 @@ TEST(EmbreePointQueryTest, ClosestPointMatchesTheReferenceDistance) {
     // The same point seen through the instance: world = 2 R p + (5, 0, 0), distances double.
     const Vec3 w{-2 * p.y + 5, 2 * p.x, 2 * p.z};
     const std::optional<ScenePoint> viaInstance =
-        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), OneGeometryLookup::find, &lookup);
     ASSERT_TRUE(viaInstance.has_value());
     EXPECT_EQ(viaInstance->instID, instID);
     EXPECT_NEAR(viaInstance->distance, 2 * expected, 4e-6 * (1.0 + expected));
@@ -892,14 +895,7 @@ TEST(PlacedGeometryTest, ClosestPointIsTheObjectSpaceOneCarriedToTheWorld) {
   const std::vector<Point2> points = testing::hollowVase();
   const revolve::Placement placement = placed::quarterTurn(2, 1, {5, 0, 0});
   placed::PlacedScene s(Shape(Profile(points)), placement);
-  struct Lookup {
-    const Geometry* geometry;
-    unsigned geomID;
-  } lookup{&s.geometry, s.geomID};
-  const GeometryLookup find = [](void* user, unsigned, unsigned id) -> const Geometry* {
-    auto* l = static_cast<Lookup*>(user);
-    return id == l->geomID ? l->geometry : nullptr;
-  };
+  OneGeometryLookup lookup{&s.geometry, s.geomID};
   std::mt19937_64 random(707);
   std::uniform_real_distribution<float> coordinate(-1.0f, 1.5f);
   for (int i = 0; i < 2000; ++i) {
@@ -907,7 +903,7 @@ TEST(PlacedGeometryTest, ClosestPointIsTheObjectSpaceOneCarriedToTheWorld) {
     const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
     const Vec3 w{-2 * p.y + 5, 2 * p.x, 2 * p.z};  // exact in float
     const std::optional<ScenePoint> found =
-        closestPoint(s.scene.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+        closestPoint(s.scene.get(), w, std::numeric_limits<float>::infinity(), OneGeometryLookup::find, &lookup);
     ASSERT_TRUE(found.has_value());
     EXPECT_EQ(found->instID, RTC_INVALID_GEOMETRY_ID);
     EXPECT_EQ(found->geomID, s.geomID);
@@ -1040,14 +1036,7 @@ TEST(PlacedGeometryTest, ClosestPointThroughAnInstanceAbovePlacedGeometry) {
   const unsigned instID = rtcAttachGeometry(world.get(), instance);
   rtcReleaseGeometry(instance);
   rtcCommitScene(world.get());
-  struct Lookup {
-    const Geometry* geometry;
-    unsigned geomID;
-  } lookup{&s.geometry, s.geomID};
-  const GeometryLookup find = [](void* user, unsigned, unsigned id) -> const Geometry* {
-    auto* l = static_cast<Lookup*>(user);
-    return id == l->geomID ? l->geometry : nullptr;
-  };
+  OneGeometryLookup lookup{&s.geometry, s.geomID};
   std::mt19937_64 random(1313);
   std::uniform_real_distribution<float> coordinate(-1.0f, 1.5f);
   for (int i = 0; i < 2000; ++i) {
@@ -1055,7 +1044,7 @@ TEST(PlacedGeometryTest, ClosestPointThroughAnInstanceAbovePlacedGeometry) {
     const double expected = double(reference::meridianDistance(points, p.x, p.y, p.z));
     const Vec3 w{-2 * p.y + 5, 2 * p.x + 3, 2 * p.z};  // exact in float
     const std::optional<ScenePoint> found =
-        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), find, &lookup);
+        closestPoint(world.get(), w, std::numeric_limits<float>::infinity(), OneGeometryLookup::find, &lookup);
     ASSERT_TRUE(found.has_value());
     EXPECT_EQ(found->instID, instID);
     EXPECT_EQ(found->geomID, s.geomID);
