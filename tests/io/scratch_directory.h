@@ -54,6 +54,21 @@ class ScratchDirectory {
   std::filesystem::path path_;
 };
 
+// Runs in `directory` for the scope (the process's working directory: tests using it must not
+// run threads that resolve relative paths meanwhile), so that relative paths read as a tool's do.
+class WorkingDirectory {
+ public:
+  explicit WorkingDirectory(const std::filesystem::path& directory) : previous_(std::filesystem::current_path()) {
+    std::filesystem::current_path(directory);
+  }
+  ~WorkingDirectory() { std::filesystem::current_path(previous_); }
+  WorkingDirectory(const WorkingDirectory&) = delete;
+  WorkingDirectory& operator=(const WorkingDirectory&) = delete;
+
+ private:
+  std::filesystem::path previous_;
+};
+
 inline std::string readWholeFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   EXPECT_TRUE(in.good()) << "cannot read " << path;

@@ -17,6 +17,7 @@ namespace revolve {
 namespace {
 
 using ::testing::HasSubstr;
+using testing::WorkingDirectory;
 
 const std::string kTableScene = R"({
   "camera": {"from": [0, -3, 1], "to": [0, 0, 0.5], "up": [0, 0, 1], "fov": 40},
@@ -37,18 +38,6 @@ const std::string kObjects =
     "0,linear,1,2,3,0,0,1,0,1\n"
     "1,catmull-rom,-4.5,0.25,0,1,0,0,90,0.5\n"
     "2,linear,7,8,9,0,0,2,30,2\n";
-
-// Runs in `directory` for the scope, so that the scene's relative CSV paths read as the tool's do.
-class WorkingDirectory {
- public:
-  explicit WorkingDirectory(const std::filesystem::path& directory) : previous_(std::filesystem::current_path()) {
-    std::filesystem::current_path(directory);
-  }
-  ~WorkingDirectory() { std::filesystem::current_path(previous_); }
-
- private:
-  std::filesystem::path previous_;
-};
 
 // The SceneError reading the table scene with these CSVs (and scene text) gives, or "" if none.
 std::string errorOf(const std::string& profiles, const std::string& objects, const std::string& scene = kTableScene) {

@@ -22,18 +22,7 @@ namespace {
 
 using testing::BadCase;
 using ::testing::HasSubstr;
-
-// Runs in `directory` for the scope, so that the scene's relative CSV paths read as the tool's do.
-class WorkingDirectory {
- public:
-  explicit WorkingDirectory(const std::filesystem::path& directory) : previous_(std::filesystem::current_path()) {
-    std::filesystem::current_path(directory);
-  }
-  ~WorkingDirectory() { std::filesystem::current_path(previous_); }
-
- private:
-  std::filesystem::path previous_;
-};
+using testing::WorkingDirectory;
 
 std::vector<BadCase> sceneCases() {
   std::vector<BadCase> cases;
