@@ -45,14 +45,6 @@ void buildSearch(detail::ShapeImpl& impl, std::span<const Point2> local, const B
   impl.mibit.nodes.shrink_to_fit();
   impl.mibit.intervals.shrink_to_fit();
   impl.mibit.implicitShells.shrink_to_fit();
-  detail::WideTree& w = impl.wide;
-  w.nodes.shrink_to_fit();
-  w.leaves.shrink_to_fit();
-  w.childRef.shrink_to_fit();
-  for (std::vector<float>* v :
-       {&w.childZLow, &w.childZHigh, &w.childLow2, &w.childHigh2, &w.segmentZLow, &w.segmentZHigh, &w.segmentLow2,
-        &w.segmentHigh2, &w.runZLow, &w.runZHigh, &w.runLow2, &w.runHigh2})
-    v->shrink_to_fit();
   impl.strips.nodes.shrink_to_fit();
 }
 
@@ -218,7 +210,7 @@ Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 std::size_t Shape::treeNodeCount() const noexcept {
   switch (impl_->options.method) {
     case Method::mibit: {
-      if (!impl_->wide.empty()) return impl_->wide.nodes.size() + impl_->wide.leaves.size();
+      if (!impl_->wide.empty()) return impl_->wide.nodes().size() + impl_->wide.leaves().size();
       // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
       // the interval's own root being its explicit leaf).
       std::size_t nodes = impl_->mibit.nodes.size();
