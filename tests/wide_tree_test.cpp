@@ -8,7 +8,8 @@
 //   rounded outwards, promise; the same for each segment's own record and the flat scan's runs;
 // - childCount <= kMaxChildren, every record belongs to one node, the padding records are empty;
 // - the depth is the node levels above the leaves: the leaves grouped kMaxChildren at a time, level
-//   by level, so every leaf lies at that depth and it is the ceiling of log64 of the leaf count.
+//   by level, so every leaf lies at that depth and it is the ceiling of log64 of the leaf count;
+// - a profile scanned whole (at most kFlatSegments segments) has no tree, only its records.
 #include "mibit/wide_tree.h"
 #include "mibit/mibit_tree.h"
 #include "support/hard_profiles.h"
@@ -118,6 +119,15 @@ class WideCheck {
   void run() {
     const std::size_t segments = points_.size() - 1;
     ASSERT_FALSE(tree_.empty());
+    checkSegmentRecords();
+    checkFlatScan();
+    if (tree_.flatSegments > 0) {
+      // Scanned whole: no tree (the search reads none), only the segments' records and the runs'.
+      EXPECT_TRUE(tree_.nodes().empty() && tree_.leaves().empty() && tree_.childRef().empty());
+      EXPECT_EQ(tree_.depth, 0u);
+      checkPadding();
+      return;
+    }
     subtree(tree_.root, 0);
     for (std::size_t k = 0; k < segments; ++k) ASSERT_EQ(segmentSeen_[k], 1) << "segment " << k << " in leaves";
     for (std::size_t i = 0; i < leafSeen_.size(); ++i) ASSERT_EQ(leafSeen_[i], 1) << "leaf " << i << " reached";
@@ -127,8 +137,6 @@ class WideCheck {
     }
     checkDepth();
     checkPadding();
-    checkSegmentRecords();
-    checkFlatScan();
   }
 
  private:
@@ -211,12 +219,14 @@ class WideCheck {
   // reaches them), for the search's whole-register loads.
   void checkPadding() {
     const std::size_t records = recordOwner_.size();
+    // A scanned profile has no child records at all, padding included.
+    const std::size_t padding = tree_.flatSegments > 0 ? 0 : WideTree::kPadding;
     for (const std::span<const float> v :
          {tree_.childZLow(), tree_.childZHigh(), tree_.childLow2(), tree_.childHigh2()}) {
-      ASSERT_EQ(v.size(), records + WideTree::kPadding);
+      ASSERT_EQ(v.size(), records + padding);
     }
-    ASSERT_EQ(tree_.childRef().size(), records + WideTree::kPadding);
-    for (std::size_t i = records; i < records + WideTree::kPadding; ++i) {
+    ASSERT_EQ(tree_.childRef().size(), records + padding);
+    for (std::size_t i = records; i < records + padding; ++i) {
       EXPECT_EQ(tree_.childLow2()[i], INFINITY) << "padding record " << i;
       EXPECT_EQ(tree_.childHigh2()[i], -INFINITY) << "padding record " << i;
     }

@@ -163,14 +163,17 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
     tree.runZLow.resize(runs, 0.0f), tree.runZHigh.resize(runs, 0.0f);
     tree.runLow2.resize(runs, kInfinity), tree.runHigh2.resize(runs, -kInfinity);
   }
-  Builder builder(points, margin, tree);
-  for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
-  builder.group();
-  tree.childZLow.insert(tree.childZLow.end(), WideTree::kPadding, 0.0f);
-  tree.childZHigh.insert(tree.childZHigh.end(), WideTree::kPadding, 0.0f);
-  tree.childLow2.insert(tree.childLow2.end(), WideTree::kPadding, kInfinity);
-  tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
-  tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
+  // A scanned profile needs no tree: its search never reads one (wide_search.h).
+  if (tree.flatSegments == 0) {
+    Builder builder(points, margin, tree);
+    for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
+    builder.group();
+    tree.childZLow.insert(tree.childZLow.end(), WideTree::kPadding, 0.0f);
+    tree.childZHigh.insert(tree.childZHigh.end(), WideTree::kPadding, 0.0f);
+    tree.childLow2.insert(tree.childLow2.end(), WideTree::kPadding, kInfinity);
+    tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
+    tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
+  }
   // Each level pushes at most 63 entries; within Profile::kMaxPoints the depth stays below 4.
   if (63 * int(tree.depth) + 1 > WideTree::kStackEntries)
     throw std::logic_error("wide MIBIT deeper than its search stack");

@@ -79,7 +79,7 @@ class WideTree {
   WideTree() = default;
   explicit WideTree(const Parts& parts);
 
-  std::uint32_t root = 0;          // a node index or kLeafBit | leaf index; meaningless when empty()
+  std::uint32_t root = 0;          // a node index or kLeafBit | leaf index; meaningless when empty() or scanned
   std::uint32_t depth = 0;         // node levels above the leaves
   std::uint32_t flatSegments = 0;  // the segment count of a profile scanned whole, else 0
 
@@ -101,7 +101,9 @@ class WideTree {
   std::span<const float> runLow2() const noexcept { return floats(runsAt(), 2, runRecords_); }
   std::span<const float> runHigh2() const noexcept { return floats(runsAt(), 3, runRecords_); }
 
-  bool empty() const noexcept { return leafCount_ == 0; }
+  // Not built (the shape's options or scale call for the binary tree). A scanned profile
+  // (flatSegments > 0) has its segments' and runs' records and no nodes, leaves or children.
+  bool empty() const noexcept { return segmentRecords_ == 0; }
   std::size_t memoryBytes() const noexcept {
     return bytesOf(segmentRecords_, runRecords_, childRecords_, nodeCount_, leafCount_);
   }

@@ -210,7 +210,11 @@ Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 std::size_t Shape::treeNodeCount() const noexcept {
   switch (impl_->options.method) {
     case Method::mibit: {
-      if (!impl_->wide.empty()) return impl_->wide.nodes().size() + impl_->wide.leaves().size();
+      if (!impl_->wide.empty()) {
+        // A scanned profile is one node holding every segment (as Stats::nodesVisited counts it).
+        if (impl_->wide.flatSegments > 0) return 1;
+        return impl_->wide.nodes().size() + impl_->wide.leaves().size();
+      }
       // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
       // the interval's own root being its explicit leaf).
       std::size_t nodes = impl_->mibit.nodes.size();
