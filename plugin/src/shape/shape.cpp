@@ -43,6 +43,7 @@ void buildSearch(detail::ShapeImpl& impl, std::span<const Point2> local, const B
   // Each array at its size: the trees grow theirs level by level, and a scene of a million shapes
   // pays for every element of slack.
   impl.mibit.nodes.shrink_to_fit();
+  impl.mibit.cones.shrink_to_fit();
   impl.mibit.intervals.shrink_to_fit();
   impl.mibit.implicitShells.shrink_to_fit();
   impl.strips.nodes.shrink_to_fit();
@@ -234,6 +235,7 @@ std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
   return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
+         impl.mibit.cones.capacity() * sizeof(detail::NodeCone) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
