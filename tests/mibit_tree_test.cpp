@@ -233,7 +233,12 @@ class TreeCheck {
     EXPECT_TRUE(tight(node.zLow, zLow) && tight(node.zHigh, zHigh) && tight(node.rMin, rMin) && tight(node.rMax, rMax))
         << what << ": [" << node.zLow << ", " << node.zHigh << "] x [" << node.rMin << ", " << node.rMax << "] around ["
         << zLow << ", " << zHigh << "] x [" << rMin << ", " << rMax << "]";
-    checkBand(node.cone(), first, last, what);
+    if (options_.shell == ShellKind::cylinder) {
+      EXPECT_TRUE(tree_.cones.empty()) << "a CY tree stores no cones";
+    } else {
+      ASSERT_EQ(tree_.cones.size(), tree_.nodes.size());
+      checkBand(tree_.cones[index].cone(), first, last, what);
+    }
     // The shell kinds the options ask for: a one-segment leaf needs none (it is its own cone), a
     // hybrid tree's root is a cylinder (the paper's cheapest first test).
     if (node.kind == MibitNode::Kind::segments && node.count == 1) {

@@ -8,7 +8,8 @@
 //   rounded outwards, promise; the same for each segment's own record and the flat scan's runs;
 // - childCount <= kMaxChildren, every record belongs to one node, the padding records are empty;
 // - the depth is the node levels above the leaves: the leaves grouped kMaxChildren at a time, level
-//   by level, so every leaf lies at that depth and it is the ceiling of log64 of the leaf count.
+//   by level, so every leaf lies at that depth and it is the ceiling of log64 of the leaf count;
+// - a profile scanned whole (at most kFlatSegments segments) has no tree, only its records.
 #include "mibit/wide_tree.h"
 #include "mibit/mibit_tree.h"
 #include "support/hard_profiles.h"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -109,13 +111,23 @@ class WideCheck {
         points_(b.local),
         margin_(b.frame.rho2Margin + WideTree::kFloatSlack * b.frame.sphereRadius * b.frame.sphereRadius),
         segmentSeen_(points_.size() - 1, 0),
-        leafSeen_(tree_.leaves.size(), 0),
-        nodeSeen_(tree_.nodes.size(), 0),
-        recordOwner_(tree_.childRef.size() >= WideTree::kPadding ? tree_.childRef.size() - WideTree::kPadding : 0, 0) {}
+        leafSeen_(tree_.leaves().size(), 0),
+        nodeSeen_(tree_.nodes().size(), 0),
+        recordOwner_(tree_.childRef().size() >= WideTree::kPadding ? tree_.childRef().size() - WideTree::kPadding : 0,
+                     0) {}
 
   void run() {
     const std::size_t segments = points_.size() - 1;
     ASSERT_FALSE(tree_.empty());
+    checkSegmentRecords();
+    checkFlatScan();
+    if (tree_.flatSegments > 0) {
+      // Scanned whole: no tree (the search reads none), only the segments' records and the runs'.
+      EXPECT_TRUE(tree_.nodes().empty() && tree_.leaves().empty() && tree_.childRef().empty());
+      EXPECT_EQ(tree_.depth, 0u);
+      checkPadding();
+      return;
+    }
     subtree(tree_.root, 0);
     for (std::size_t k = 0; k < segments; ++k) ASSERT_EQ(segmentSeen_[k], 1) << "segment " << k << " in leaves";
     for (std::size_t i = 0; i < leafSeen_.size(); ++i) ASSERT_EQ(leafSeen_[i], 1) << "leaf " << i << " reached";
@@ -125,8 +137,6 @@ class WideCheck {
     }
     checkDepth();
     checkPadding();
-    checkSegmentRecords();
-    checkFlatScan();
   }
 
  private:
@@ -134,11 +144,11 @@ class WideCheck {
     Extent extent;
     if (ref & WideTree::kLeafBit) {
       const std::uint32_t index = ref & ~WideTree::kLeafBit;
-      EXPECT_LT(index, tree_.leaves.size());
-      if (index >= tree_.leaves.size()) return extent;
+      EXPECT_LT(index, tree_.leaves().size());
+      if (index >= tree_.leaves().size()) return extent;
       ++leafSeen_[index];
       EXPECT_EQ(depth, tree_.depth) << "leaf " << index << " not at the tree's depth";
-      const WideLeaf& leaf = tree_.leaves[index];
+      const WideLeaf& leaf = tree_.leaves()[index];
       checkLeaf(index, leaf);
       for (std::uint32_t k = leaf.firstSegment; k < leaf.firstSegment + leaf.segmentCount && k < segmentSeen_.size();
            ++k) {
@@ -148,19 +158,19 @@ class WideCheck {
       }
       return extent;
     }
-    EXPECT_LT(ref, tree_.nodes.size());
-    if (ref >= tree_.nodes.size()) return extent;
+    EXPECT_LT(ref, tree_.nodes().size());
+    if (ref >= tree_.nodes().size()) return extent;
     ++nodeSeen_[ref];
-    const WideNode& node = tree_.nodes[ref];
+    const WideNode& node = tree_.nodes()[ref];
     EXPECT_GE(node.childCount, 1u);
     EXPECT_LE(node.childCount, WideNode::kMaxChildren);
     EXPECT_LE(node.firstChild + node.childCount, recordOwner_.size())
         << "node " << ref << "'s records run into the padding";
     for (std::uint32_t c = node.firstChild; c < node.firstChild + node.childCount && c < recordOwner_.size(); ++c) {
       ++recordOwner_[c];
-      const Extent child = subtree(tree_.childRef[c], depth + 1);
-      EXPECT_TRUE(
-          holds(tree_.childZLow[c], tree_.childZHigh[c], tree_.childLow2[c], tree_.childHigh2[c], child, margin_))
+      const Extent child = subtree(tree_.childRef()[c], depth + 1);
+      EXPECT_TRUE(holds(tree_.childZLow()[c], tree_.childZHigh()[c], tree_.childLow2()[c], tree_.childHigh2()[c], child,
+                        margin_))
           << "node " << ref << ", child record " << c;
       extent.add(child);
     }
@@ -198,7 +208,7 @@ class WideCheck {
     for (const detail::MonotoneInterval& interval : b_.intervals) {
       leaves += (interval.segmentCount + WideTree::kLeafSegments - 1) / WideTree::kLeafSegments;
     }
-    EXPECT_EQ(tree_.leaves.size(), leaves);
+    EXPECT_EQ(tree_.leaves().size(), leaves);
     std::uint32_t levels = 0;
     for (std::size_t n = leaves; n > 1; n = (n + WideNode::kMaxChildren - 1) / WideNode::kMaxChildren) ++levels;
     EXPECT_EQ(tree_.depth, levels);
@@ -209,21 +219,25 @@ class WideCheck {
   // reaches them), for the search's whole-register loads.
   void checkPadding() {
     const std::size_t records = recordOwner_.size();
-    for (const auto* v : {&tree_.childZLow, &tree_.childZHigh, &tree_.childLow2, &tree_.childHigh2}) {
-      ASSERT_EQ(v->size(), records + WideTree::kPadding);
+    // A scanned profile has no child records at all, padding included.
+    const std::size_t padding = tree_.flatSegments > 0 ? 0 : WideTree::kPadding;
+    for (const std::span<const float> v :
+         {tree_.childZLow(), tree_.childZHigh(), tree_.childLow2(), tree_.childHigh2()}) {
+      ASSERT_EQ(v.size(), records + padding);
     }
-    ASSERT_EQ(tree_.childRef.size(), records + WideTree::kPadding);
-    for (std::size_t i = records; i < records + WideTree::kPadding; ++i) {
-      EXPECT_EQ(tree_.childLow2[i], INFINITY) << "padding record " << i;
-      EXPECT_EQ(tree_.childHigh2[i], -INFINITY) << "padding record " << i;
+    ASSERT_EQ(tree_.childRef().size(), records + padding);
+    for (std::size_t i = records; i < records + padding; ++i) {
+      EXPECT_EQ(tree_.childLow2()[i], INFINITY) << "padding record " << i;
+      EXPECT_EQ(tree_.childHigh2()[i], -INFINITY) << "padding record " << i;
     }
     const std::size_t segments = points_.size() - 1;
-    for (const auto* v : {&tree_.segmentZLow, &tree_.segmentZHigh, &tree_.segmentLow2, &tree_.segmentHigh2}) {
-      ASSERT_EQ(v->size(), segments + WideTree::kPadding);
+    for (const std::span<const float> v :
+         {tree_.segmentZLow(), tree_.segmentZHigh(), tree_.segmentLow2(), tree_.segmentHigh2()}) {
+      ASSERT_EQ(v.size(), segments + WideTree::kPadding);
     }
     for (std::size_t k = segments; k < segments + WideTree::kPadding; ++k) {
-      EXPECT_EQ(tree_.segmentLow2[k], INFINITY) << "padding segment " << k;
-      EXPECT_EQ(tree_.segmentHigh2[k], -INFINITY) << "padding segment " << k;
+      EXPECT_EQ(tree_.segmentLow2()[k], INFINITY) << "padding segment " << k;
+      EXPECT_EQ(tree_.segmentHigh2()[k], -INFINITY) << "padding segment " << k;
     }
   }
 
@@ -232,8 +246,8 @@ class WideCheck {
       Extent e;
       e.add(points_[k]);
       e.add(points_[k + 1]);
-      ASSERT_TRUE(
-          holds(tree_.segmentZLow[k], tree_.segmentZHigh[k], tree_.segmentLow2[k], tree_.segmentHigh2[k], e, margin_))
+      ASSERT_TRUE(holds(tree_.segmentZLow()[k], tree_.segmentZHigh()[k], tree_.segmentLow2()[k],
+                        tree_.segmentHigh2()[k], e, margin_))
           << "segment " << k << "'s own record";
     }
   }
@@ -244,21 +258,22 @@ class WideCheck {
     const std::size_t segments = points_.size() - 1;
     EXPECT_EQ(tree_.flatSegments, segments <= WideTree::kFlatSegments ? segments : 0u);
     if (!(segments > WideTree::kRunScan && segments <= WideTree::kFlatSegments)) {
-      EXPECT_TRUE(tree_.runLow2.empty());
+      EXPECT_TRUE(tree_.runLow2().empty());
       return;
     }
     const std::size_t runs = WideTree::kFlatSegments / WideTree::kRunSegments;
-    ASSERT_EQ(tree_.runZLow.size(), runs);
-    ASSERT_EQ(tree_.runLow2.size(), runs);
+    ASSERT_EQ(tree_.runZLow().size(), runs);
+    ASSERT_EQ(tree_.runLow2().size(), runs);
     for (std::size_t run = 0; run < runs; ++run) {
       const std::size_t first = run * WideTree::kRunSegments;
       if (first >= segments) {
-        EXPECT_EQ(tree_.runLow2[run], INFINITY) << "unused run " << run;
+        EXPECT_EQ(tree_.runLow2()[run], INFINITY) << "unused run " << run;
         continue;
       }
       for (std::size_t k = first; k < std::min(segments, first + WideTree::kRunSegments); ++k) {
-        EXPECT_TRUE(tree_.runZLow[run] <= tree_.segmentZLow[k] && tree_.segmentZHigh[k] <= tree_.runZHigh[run] &&
-                    tree_.runLow2[run] <= tree_.segmentLow2[k] && tree_.segmentHigh2[k] <= tree_.runHigh2[run])
+        EXPECT_TRUE(tree_.runZLow()[run] <= tree_.segmentZLow()[k] &&
+                    tree_.segmentZHigh()[k] <= tree_.runZHigh()[run] &&
+                    tree_.runLow2()[run] <= tree_.segmentLow2()[k] && tree_.segmentHigh2()[k] <= tree_.runHigh2()[run])
             << "run " << run << " misses segment " << k;
       }
     }

@@ -20,10 +20,12 @@
 namespace revolve::detail {
 inline namespace REVOLVE_ISA {
 
-// Whether the ray can meet anything under `node` within [lo, hi]; `entry` is where it would start.
+// Whether the ray can meet anything under explicit node `index` within [lo, hi]; `entry` is where it
+// would start.
 template <bool kCount>
-inline bool enterMibitNode(const MibitNode& node, const MeridianRay& ray, double lo, double hi, bool rangeSearch,
-                           double& entry, Stats& stats) noexcept {
+inline bool enterMibitNode(const MibitTree& tree, std::uint32_t index, const MeridianRay& ray, double lo, double hi,
+                           bool rangeSearch, double& entry, Stats& stats) noexcept {
+  const MibitNode& node = tree.nodes[index];
   double s0 = lo, s1 = hi;
   bool overlaps = true;
   bool contained = true;  // overlap type 3
@@ -44,7 +46,7 @@ inline bool enterMibitNode(const MibitNode& node, const MeridianRay& ray, double
   if constexpr (kCount) ++stats.shellTests;
   if (!overlaps) return false;  // without range search the slab is part of the shell test
   return node.shell == NodeShell::cylinder ? cylinderShellPasses(ray, node.rMin, node.rMax, s0, s1)
-                                           : bandPasses(ray, node.cone(), s0, s1);
+                                           : bandPasses(ray, tree.cones[index].cone(), s0, s1);
 }
 
 // Calls visitSegment(k) for every segment k the search cannot rule out, nearest regions first.
@@ -62,7 +64,7 @@ inline void searchMibit(const MibitTree& tree, LocalPoints points, bool rangeSea
   Entry stack[64];
   int top = 0;
   Entry current{0, 0.0};
-  if (!enterMibitNode<kCount>(tree.nodes[0], ray, ray.lo, hi, rangeSearch, current.s, stats)) return;
+  if (!enterMibitNode<kCount>(tree, 0, ray, ray.lo, hi, rangeSearch, current.s, stats)) return;
 
   for (;;) {
     bool descended = false;
@@ -80,8 +82,8 @@ inline void searchMibit(const MibitTree& tree, LocalPoints points, bool rangeSea
         }
       } else {
         double entryA = 0.0, entryB = 0.0;
-        const bool a = enterMibitNode<kCount>(tree.nodes[node.first], ray, ray.lo, hi, rangeSearch, entryA, stats);
-        const bool b = enterMibitNode<kCount>(tree.nodes[node.first + 1], ray, ray.lo, hi, rangeSearch, entryB, stats);
+        const bool a = enterMibitNode<kCount>(tree, node.first, ray, ray.lo, hi, rangeSearch, entryA, stats);
+        const bool b = enterMibitNode<kCount>(tree, node.first + 1, ray, ray.lo, hi, rangeSearch, entryB, stats);
         if (a && b) {
           const bool aFirst = entryA <= entryB;
           stack[top++] = aFirst ? Entry{node.first + 1, entryB} : Entry{node.first, entryA};

@@ -171,6 +171,7 @@ class Builder {
   // Lays the drafts out breadth first with each node's children adjacent, and fits the shells.
   void linearise(std::int64_t root) {
     tree_.nodes.resize(drafts_.size());
+    if (options_.shell != ShellKind::cylinder) tree_.cones.resize(drafts_.size());
     struct Pending {
       std::int64_t draft;
       std::uint32_t node, depth;
@@ -181,7 +182,7 @@ class Builder {
       const Pending pending = queue[i];
       const Draft& draft = drafts_[pending.draft];
       MibitNode& node = tree_.nodes[pending.node];
-      fitShell(draft, pending.node == 0, node);
+      fitShell(draft, pending.node, node);
       node.kind = draft.kind;
       switch (draft.kind) {
         case MibitNode::Kind::inner:
@@ -206,18 +207,19 @@ class Builder {
     }
   }
 
-  void fitShell(const Draft& draft, bool isRoot, MibitNode& node) const {
+  void fitShell(const Draft& draft, std::uint32_t index, MibitNode& node) {
+    const bool isRoot = index == 0;
     const std::span<const Point2> run = points_.subspan(draft.segmentBegin, draft.segmentEnd - draft.segmentBegin + 1);
     const Extent extent = extentOf(run);
-    const Band band = chordBand(run, hullOf(draft.segmentBegin, draft.segmentEnd));
+    // CY trees store no band and choose no shell by it: their build skips the fit.
+    const Band band =
+        options_.shell == ShellKind::cylinder ? Band{} : chordBand(run, hullOf(draft.segmentBegin, draft.segmentEnd));
     node.zLow = floatBelow(extent.zLow);
     node.zHigh = floatAbove(extent.zHigh);
     node.rMin = floatBelow(extent.rMin);
     node.rMax = floatAbove(extent.rMax);
-    node.coneNr = float(band.nr);
-    node.coneNz = float(band.nz);
-    node.coneWLow = floatBelow(band.wLow);
-    node.coneWHigh = floatAbove(band.wHigh);
+    if (!tree_.cones.empty())
+      tree_.cones[index] = {float(band.nr), float(band.nz), floatBelow(band.wLow), floatAbove(band.wHigh)};
     if (draft.kind == MibitNode::Kind::segments && run.size() == 2) {
       node.shell = NodeShell::none;  // a single segment is its own truncated cone
     } else if (isRoot && options_.shell == ShellKind::hybrid) {

@@ -27,7 +27,7 @@ namespace revolve::detail {
 
 enum class NodeShell : std::uint8_t { none, cylinder, cone };
 
-// An explicit node, 44 bytes. Bounds are floats rounded outwards: a shell need only contain its
+// An explicit node, 28 bytes. Bounds are floats rounded outwards: a shell need only contain its
 // run, and since planeS is monotone in z an outward-rounded slab still gives a superset of the
 // ray's stretch (the leaves alone decide hits, with the exact vertex heights).
 struct MibitNode {
@@ -38,12 +38,16 @@ struct MibitNode {
   };
   float zLow, zHigh;  // z slab
   float rMin, rMax;   // radial extent: the CY shell, and the meridian box of closest-point queries
-  float coneNr, coneNz, coneWLow, coneWHigh;  // the TC shell: coneWLow <= nr rho + nz z <= coneWHigh, nr >= 0
   std::uint32_t first;
   std::uint32_t count;
   NodeShell shell;
   Kind kind;
+};
 
+// A node's TC shell: coneWLow <= nr rho + nz z <= coneWHigh, nr >= 0. Kept apart from the nodes,
+// and only for TC and HY trees: the default cylinder-shell trees never read one.
+struct NodeCone {
+  float coneNr, coneNz, coneWLow, coneWHigh;
   Band cone() const noexcept { return {coneNr, coneNz, coneWLow, coneWHigh}; }
 };
 
@@ -67,6 +71,7 @@ std::vector<MonotoneInterval> monotoneIntervals(std::span<const Point2> points);
 
 struct MibitTree {
   std::vector<MibitNode> nodes;  // explicit nodes; nodes[0] is the root
+  std::vector<NodeCone> cones;   // each explicit node's TC shell; empty for CY trees
   std::vector<MonotoneInterval> intervals;
   std::vector<ImplicitShell> implicitShells;  // empty for CY trees
   std::uint32_t depth = 0;                    // longest root-to-leaf path, explicit and implicit nodes together

@@ -92,6 +92,9 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
   using namespace wide_search_internal;
   const ShellRay shellRay = shellRayOf(ray, sphereRadius);
   const bool dzPositive = ray.dz > 0.0;
+  // The arrays' addresses, once: they lie at offsets into the tree's one allocation.
+  const float *segmentZLow = tree.segmentZLow().data(), *segmentZHigh = tree.segmentZHigh().data(),
+              *segmentLow2 = tree.segmentLow2().data(), *segmentHigh2 = tree.segmentHigh2().data();
   if (tree.flatSegments > 0) {
     // A small profile: every segment's shell at once, no tree; the few candidates sorted by entry.
     const FloatLanes hiLanes = splatFloat(floatHi(hi));
@@ -100,8 +103,8 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
     if (tree.flatSegments <= WideTree::kRunScan) {
       for (std::uint32_t c = 0; c < tree.flatSegments; c += kFloatLanes) {
         FloatLanes entry;
-        const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[c]), load(&tree.segmentZHigh[c]),
-                                       load(&tree.segmentLow2[c]), load(&tree.segmentHigh2[c]), entry);
+        const unsigned met = shellsMet(shellRay, hiLanes, load(&segmentZLow[c]), load(&segmentZHigh[c]),
+                                       load(&segmentLow2[c]), load(&segmentHigh2[c]), entry);
         store(&entries[c], entry);
         candidates |= std::uint64_t(met) << c;
       }
@@ -114,8 +117,8 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
       unsigned runs = 0;
       for (std::uint32_t c = 0; c < kRuns; c += kFloatLanes) {
         FloatLanes entry;
-        runs |= shellsMet(shellRay, hiLanes, load(&tree.runZLow[c]), load(&tree.runZHigh[c]), load(&tree.runLow2[c]),
-                          load(&tree.runHigh2[c]), entry)
+        runs |= shellsMet(shellRay, hiLanes, load(&tree.runZLow()[c]), load(&tree.runZHigh()[c]),
+                          load(&tree.runLow2()[c]), load(&tree.runHigh2()[c]), entry)
                 << c;
       }
       if constexpr (kCount) stats.shellTests += kRuns + WideTree::kRunSegments * unsigned(__builtin_popcount(runs));
@@ -123,8 +126,8 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
         const std::uint32_t first = std::uint32_t(__builtin_ctz(runs)) * WideTree::kRunSegments;
         for (std::uint32_t c = first; c < first + WideTree::kRunSegments; c += kFloatLanes) {
           FloatLanes entry;
-          const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[c]), load(&tree.segmentZHigh[c]),
-                                         load(&tree.segmentLow2[c]), load(&tree.segmentHigh2[c]), entry);
+          const unsigned met = shellsMet(shellRay, hiLanes, load(&segmentZLow[c]), load(&segmentZHigh[c]),
+                                         load(&segmentLow2[c]), load(&segmentHigh2[c]), entry);
           store(&entries[c], entry);
           candidates |= std::uint64_t(met) << c;
         }
@@ -147,6 +150,11 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
     }
     return;
   }
+  const float *childZLow = tree.childZLow().data(), *childZHigh = tree.childZHigh().data(),
+              *childLow2 = tree.childLow2().data(), *childHigh2 = tree.childHigh2().data();
+  const std::uint32_t* childRef = tree.childRef().data();
+  const WideNode* nodes = tree.nodes().data();
+  const WideLeaf* leaves = tree.leaves().data();
   Entry stack[WideTree::kStackEntries];
   int top = 0;
   Entry current{tree.root, shellRay.loScalar};
@@ -156,15 +164,15 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
       const FloatLanes hiLanes = splatFloat(floatHi(hi));
       if (current.ref & WideTree::kLeafBit) {
         // A monotone run: candidates in index order are candidates in ray order.
-        const WideLeaf& leaf = tree.leaves[current.ref & ~WideTree::kLeafBit];
+        const WideLeaf& leaf = leaves[current.ref & ~WideTree::kLeafBit];
         const std::uint32_t first = leaf.firstSegment, count = leaf.segmentCount;
         float entries[WideTree::kLeafSegments + kFloatLanes];
         std::uint64_t candidates = 0;
         for (std::uint32_t c = 0; c < count; c += kFloatLanes) {
           const std::uint32_t k = first + c;
           FloatLanes entry;
-          const unsigned met = shellsMet(shellRay, hiLanes, load(&tree.segmentZLow[k]), load(&tree.segmentZHigh[k]),
-                                         load(&tree.segmentLow2[k]), load(&tree.segmentHigh2[k]), entry);
+          const unsigned met = shellsMet(shellRay, hiLanes, load(&segmentZLow[k]), load(&segmentZHigh[k]),
+                                         load(&segmentLow2[k]), load(&segmentHigh2[k]), entry);
           store(&entries[c], entry);
           candidates |= std::uint64_t(met) << c;
         }
@@ -178,15 +186,15 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
           if (visitSegment(first + std::uint32_t(j))) return;
         }
       } else {
-        const WideNode& node = tree.nodes[current.ref];
+        const WideNode& node = nodes[current.ref];
         const std::uint32_t first = node.firstChild, count = node.childCount;
         float entries[WideNode::kMaxChildren + kFloatLanes];
         std::uint64_t met = 0;
         for (std::uint32_t c = 0; c < count; c += kFloatLanes) {
           const std::uint32_t k = first + c;
           FloatLanes entry;
-          met |= std::uint64_t(shellsMet(shellRay, hiLanes, load(&tree.childZLow[k]), load(&tree.childZHigh[k]),
-                                         load(&tree.childLow2[k]), load(&tree.childHigh2[k]), entry))
+          met |= std::uint64_t(shellsMet(shellRay, hiLanes, load(&childZLow[k]), load(&childZHigh[k]),
+                                         load(&childLow2[k]), load(&childHigh2[k]), entry))
                  << c;
           store(&entries[c], entry);
         }
@@ -198,7 +206,7 @@ inline void searchWide(const WideTree& tree, const MeridianRay& ray, double sphe
           int passed = 0;
           for (; met != 0; met &= met - 1) {
             const int j = __builtin_ctzll(met);
-            const Entry child{tree.childRef[first + std::uint32_t(j)], entries[j]};
+            const Entry child{childRef[first + std::uint32_t(j)], entries[j]};
             int i = passed++;
             for (; i > 0 && children[i - 1].s < child.s; --i) children[i] = children[i - 1];
             children[i] = child;

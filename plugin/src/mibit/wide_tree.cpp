@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace revolve::detail {
@@ -31,7 +33,7 @@ FloatShell floatShell(const Child& c, double margin) {
 
 class Builder {
  public:
-  Builder(std::span<const Point2> points, double margin, WideTree& tree)
+  Builder(std::span<const Point2> points, double margin, WideTree::Parts& tree)
       : points_(points), margin_(margin), tree_(tree) {}
 
   // MR: an interval refined uniformly into leaves of at most kLeafSegments segments.
@@ -85,24 +87,47 @@ class Builder {
 
   std::span<const Point2> points_;
   double margin_;
-  WideTree& tree_;
+  WideTree::Parts& tree_;
   std::vector<Child> level_;
 };
 
 }  // namespace
 
-std::size_t WideTree::memoryBytes() const noexcept {
-  return nodes.capacity() * sizeof(WideNode) + leaves.capacity() * sizeof(WideLeaf) +
-         (segmentZLow.capacity() + segmentZHigh.capacity() + segmentLow2.capacity() + segmentHigh2.capacity() +
-          childZLow.capacity() + childZHigh.capacity() + childLow2.capacity() + childHigh2.capacity()) *
-             sizeof(float) +
-         (runZLow.capacity() + runZHigh.capacity() + runLow2.capacity() + runHigh2.capacity()) * sizeof(float) +
-         childRef.capacity() * sizeof(std::uint32_t);
+namespace {
+// Appends `values` to `storage` at `at`, and moves `at` past them.
+template <class T>
+void put(std::byte* storage, std::size_t& at, const std::vector<T>& values) {
+  if (!values.empty()) std::memcpy(storage + at, values.data(), values.size() * sizeof(T));
+  at += values.size() * sizeof(T);
+}
+}  // namespace
+
+WideTree::WideTree(const Parts& parts)
+    : root(parts.root),
+      depth(parts.depth),
+      flatSegments(parts.flatSegments),
+      segmentRecords_(std::uint32_t(parts.segmentZLow.size())),
+      runRecords_(std::uint32_t(parts.runZLow.size())),
+      childRecords_(std::uint32_t(parts.childRef.size())),
+      nodeCount_(std::uint32_t(parts.nodes.size())),
+      leafCount_(std::uint32_t(parts.leaves.size())) {
+  const std::size_t bytes = memoryBytes();
+  if (bytes == 0) return;
+  storage_ = std::make_unique_for_overwrite<std::byte[]>(bytes);
+  std::size_t at = 0;
+  for (const auto* v : {&parts.segmentZLow, &parts.segmentZHigh, &parts.segmentLow2, &parts.segmentHigh2,
+                        &parts.runZLow, &parts.runZHigh, &parts.runLow2, &parts.runHigh2, &parts.childZLow,
+                        &parts.childZHigh, &parts.childLow2, &parts.childHigh2})
+    put(storage_.get(), at, *v);
+  put(storage_.get(), at, parts.childRef);
+  put(storage_.get(), at, parts.nodes);
+  put(storage_.get(), at, parts.leaves);
+  if (at != bytes) throw std::logic_error("wide MIBIT's arrays do not fill its allocation");
 }
 
 WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneInterval> intervals,
                        const ShapeFrame& frame) {
-  WideTree tree;
+  WideTree::Parts tree;
   // The leaves' double-precision margin plus the float filter's own error (wide_search.h).
   const double margin = frame.rho2Margin + WideTree::kFloatSlack * frame.sphereRadius * frame.sphereRadius;
   const std::size_t segments = points.size() - 1;
@@ -138,18 +163,21 @@ WideTree buildWideTree(std::span<const Point2> points, std::span<const MonotoneI
     tree.runZLow.resize(runs, 0.0f), tree.runZHigh.resize(runs, 0.0f);
     tree.runLow2.resize(runs, kInfinity), tree.runHigh2.resize(runs, -kInfinity);
   }
-  Builder builder(points, margin, tree);
-  for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
-  builder.group();
-  tree.childZLow.insert(tree.childZLow.end(), WideTree::kPadding, 0.0f);
-  tree.childZHigh.insert(tree.childZHigh.end(), WideTree::kPadding, 0.0f);
-  tree.childLow2.insert(tree.childLow2.end(), WideTree::kPadding, kInfinity);
-  tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
-  tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
+  // A scanned profile needs no tree: its search never reads one (wide_search.h).
+  if (tree.flatSegments == 0) {
+    Builder builder(points, margin, tree);
+    for (const MonotoneInterval& interval : intervals) builder.addInterval(interval);
+    builder.group();
+    tree.childZLow.insert(tree.childZLow.end(), WideTree::kPadding, 0.0f);
+    tree.childZHigh.insert(tree.childZHigh.end(), WideTree::kPadding, 0.0f);
+    tree.childLow2.insert(tree.childLow2.end(), WideTree::kPadding, kInfinity);
+    tree.childHigh2.insert(tree.childHigh2.end(), WideTree::kPadding, -kInfinity);
+    tree.childRef.insert(tree.childRef.end(), WideTree::kPadding, 0u);
+  }
   // Each level pushes at most 63 entries; within Profile::kMaxPoints the depth stays below 4.
   if (63 * int(tree.depth) + 1 > WideTree::kStackEntries)
     throw std::logic_error("wide MIBIT deeper than its search stack");
-  return tree;
+  return WideTree(tree);
 }
 
 }  // namespace revolve::detail

@@ -43,16 +43,9 @@ void buildSearch(detail::ShapeImpl& impl, std::span<const Point2> local, const B
   // Each array at its size: the trees grow theirs level by level, and a scene of a million shapes
   // pays for every element of slack.
   impl.mibit.nodes.shrink_to_fit();
+  impl.mibit.cones.shrink_to_fit();
   impl.mibit.intervals.shrink_to_fit();
   impl.mibit.implicitShells.shrink_to_fit();
-  detail::WideTree& w = impl.wide;
-  w.nodes.shrink_to_fit();
-  w.leaves.shrink_to_fit();
-  w.childRef.shrink_to_fit();
-  for (std::vector<float>* v :
-       {&w.childZLow, &w.childZHigh, &w.childLow2, &w.childHigh2, &w.segmentZLow, &w.segmentZHigh, &w.segmentLow2,
-        &w.segmentHigh2, &w.runZLow, &w.runZHigh, &w.runLow2, &w.runHigh2})
-    v->shrink_to_fit();
   impl.strips.nodes.shrink_to_fit();
 }
 
@@ -218,7 +211,11 @@ Bounds Shape::bounds() const noexcept { return impl_->bounds; }
 std::size_t Shape::treeNodeCount() const noexcept {
   switch (impl_->options.method) {
     case Method::mibit: {
-      if (!impl_->wide.empty()) return impl_->wide.nodes.size() + impl_->wide.leaves.size();
+      if (!impl_->wide.empty()) {
+        // A scanned profile is one node holding every segment (as Stats::nodesVisited counts it).
+        if (impl_->wide.flatSegments > 0) return 1;
+        return impl_->wide.nodes().size() + impl_->wide.leaves().size();
+      }
       // Explicit nodes, plus the implicit MR nodes below each interval leaf (2 leaves - 1 each,
       // the interval's own root being its explicit leaf).
       std::size_t nodes = impl_->mibit.nodes.size();
@@ -238,6 +235,7 @@ std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
   return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
          impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
+         impl.mibit.cones.capacity() * sizeof(detail::NodeCone) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +
