@@ -138,7 +138,9 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   // rounding bounds, scaled by its radius, hold for the control values the leaves compute with.
   double radius = 0.0;
   std::vector<detail::CurvePart> local;
-  std::vector<Point2> knots{{parts[0].c[0].r, parts[0].c[0].z - zCentre}}, inner;
+  // The knots as the parts have them (global): the profile's points, whose shift as read
+  // (localPointsOf: z - zCentre) is the very double each part's local end holds.
+  std::vector<Point2> knots{parts[0].c[0]}, inner;
   std::vector<double> arc{0.0}, lengths;
   std::vector<detail::ArcTable> tables;  // the curved parts' (a straight part's v is its chord's)
   auto data = std::make_unique<detail::SplineData>(detail::SplineData{std::move(curve), {}, {}});
@@ -157,7 +159,7 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     detail::ArcTable table = detail::arcTableOf(c.r, c.z);
     lengths.push_back(table.length);
     if (!c.straight) tables.push_back(std::move(table));
-    knots.push_back({c.r[3], c.z[3]});
+    knots.push_back(part.c[3]);
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
     arc.push_back(arc.back() + lengths.back());
@@ -184,18 +186,17 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   }
   data->firstPartOfPiece.shrink_to_fit();  // grown by insertion
 
-  std::vector<Point2> global;
-  global.reserve(knots.size());
-  for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
   impl_ = std::make_unique<detail::ShapeImpl>(
-      Profile(Profile::Unchecked{}, std::move(global), arc, data->spline.closed()), options);
+      Profile(Profile::Unchecked{}, std::move(knots), arc, data->spline.closed()), options);
   detail::ShapeImpl& impl = *impl_;
   impl.parts = std::move(local);
   impl.curve = std::move(data);
-  impl.local = std::move(knots);
-  impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
-  buildSearch(impl, impl.local, options, inner);
+  // The builders' copy of the knots in the local frame, the doubles localPointsOf gives.
+  std::vector<Point2> localKnots;
+  localKnots.reserve(impl.parts.size() + 1);
+  for (const Point2& p : impl.profile.points()) localKnots.push_back({p.r, p.z - zCentre});
+  buildSearch(impl, localKnots, options, inner);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
 
@@ -236,8 +237,7 @@ std::size_t Shape::treeNodeCount() const noexcept {
 
 std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
-  return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
-         impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
+  return sizeof(detail::ShapeImpl) + impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +
          impl.strips.nodes.capacity() * sizeof(detail::StripNode) + impl.wide.memoryBytes() +

@@ -37,7 +37,8 @@ template <bool kCurve>
 inline SegmentFrame segmentFrameOf(const detail::ShapeImpl& shape, std::uint32_t k) noexcept {
   double er, ez;
   if constexpr (kCurve) {
-    const Point2 a = shape.local[k], b = shape.local[k + 1];
+    const LocalPoints local = localPointsOf(shape);
+    const Point2 a = local[k], b = local[k + 1];
     er = b.r - a.r, ez = b.z - a.z;
   } else {
     const Point2* p = shape.profile.points().data();
