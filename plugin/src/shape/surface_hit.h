@@ -92,7 +92,9 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
   hit.segment = k;
   if constexpr ((kAttributes & kUvAttribute) != 0) {
     hit.u = azimuthFraction(px, py);
-    hit.v = float(arcRecordV(&shape.curve->arcRecords[part.arcRecord], part.arcSteps, part.r, part.z, u));
+    const double* arc = shape.profile.arcLength().data();
+    hit.v = float(arcRecordV(shape.curve->arcRecords.data() + part.arcRecord, part.arcSteps, part.r, part.z, u, arc[k],
+                             arc[k + 1], arc[shape.profile.segmentCount()]));
   }
   if constexpr ((kAttributes & kNormalAttribute) == 0) return hit;
   const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
