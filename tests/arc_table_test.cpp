@@ -13,6 +13,7 @@
 // its 1,024-step cap.
 #include "curve/arc_table.h"
 #include "curve/arc_length.h"
+#include "curve/arc_record.h"
 #include "curve/monotone_parts.h"
 #include "support/spline_profiles.h"
 #include "support/test_seeds.h"
@@ -24,6 +25,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -88,7 +90,7 @@ void checkTable(const Part& p, const std::string& what) {
         const Real at = (k + j / 16.0L) / table.steps;
         const Real exact = cumulative + lengthBetween(p, t, at, eps);
         ASSERT_LE(
-            std::abs(detail::arcLengthFrom(table.cumulative.data(), table.steps, p.r, p.z, double(at), 1.0) - exact),
+            std::abs(detail::arcLengthFrom(table.cumulative.data() + 1, table.steps, p.r, p.z, double(at)) - exact),
             0x1p-30L * L + lengthTolerance)
             << "arc length at " << j << "/16 of step " << k;
       }
@@ -97,9 +99,9 @@ void checkTable(const Part& p, const std::string& what) {
   EXPECT_LE(std::abs(table.length - cumulative), lengthTolerance);
   EXPECT_EQ(table.length, table.cumulative[table.steps]);
   // u is clamped to [0, 1]: below, the first entry exactly (a rule over no width adds 0).
-  EXPECT_EQ(detail::arcLengthFrom(table.cumulative.data(), table.steps, p.r, p.z, -0.5, 1.0), table.cumulative[0]);
+  EXPECT_EQ(detail::arcLengthFrom(table.cumulative.data() + 1, table.steps, p.r, p.z, -0.5), table.cumulative[0]);
   if (table.steps < 1024) {
-    EXPECT_LE(std::abs(detail::arcLengthFrom(table.cumulative.data(), table.steps, p.r, p.z, 1.5, 1.0) - cumulative),
+    EXPECT_LE(std::abs(detail::arcLengthFrom(table.cumulative.data() + 1, table.steps, p.r, p.z, 1.5) - cumulative),
               0x1p-30L * L + lengthTolerance);
   }
 }
@@ -184,6 +186,56 @@ TEST(ArcTable, MonotonePartsOfTestSplinesAndRandomCurves) {
     }
   }
   EXPECT_GT(tables, 100u);
+}
+
+TEST(ArcRecord, VIsTheArcLengthFractionAndMeetsTheNeighboursExactly) {
+  // A curve of curved parts (a wave's: the natural spline through a zigzag, split where r or z
+  // turns), recorded as a spline shape records them (arc_record.h: each table without its ends; the
+  // curve's length up to each part from the tables' lengths): v at 16 points of every step against
+  // the long-double length up to there over the long-double length of the curve, within the
+  // promised 2^-30 of the part's length (over the curve's), plus 2^-39 for each of the three table
+  // lengths it rests on (the part's own, the sum up to the part, the curve's: each within 2^-39 of
+  // its length, at most the curve's), plus 2^-52 for the roundings of v itself. At u = 0 v is the
+  // part's v0 exactly, and at u = 1 at most the next part's: v never steps back across a join.
+  std::vector<Point2> zigzag;
+  for (int i = 0; i <= 12; ++i) zigzag.push_back({1.0 + 0.3 * (i % 2), 0.25 * i});
+  const Spline curve(SplineKind::natural, zigzag);
+  double extent = 0.0;
+  for (const Point2& p : curve.bezier()) extent = std::max({extent, std::abs(p.r), std::abs(p.z)});
+  std::vector<Part> parts;
+  for (const detail::MonotonePart& part : detail::monotoneParts(curve.bezier(), extent))
+    parts.push_back(partOf(part.c));
+  ASSERT_GT(parts.size(), 12u);
+  std::vector<double> records, arc{0.0};
+  std::vector<std::uint32_t> first, steps;
+  std::vector<Real> exactArc{0};
+  for (const Part& p : parts) {
+    const detail::ArcTable table = detail::arcTableOf(p.r, p.z);
+    first.push_back(std::uint32_t(records.size()));
+    steps.push_back(table.steps);
+    records.insert(records.end(), table.cumulative.begin() + 1, table.cumulative.end() - 1);
+    arc.push_back(arc.back() + table.length);
+    exactArc.push_back(exactArc.back() + lengthBetween(p, 0, 1, 0x1p-60L));
+  }
+  ASSERT_EQ(records.size(), std::size_t(std::accumulate(steps.begin(), steps.end(), 0u)) - parts.size());
+  const double total = arc.back();
+  const Real exactTotal = exactArc.back();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    SCOPED_TRACE("part " + std::to_string(k));
+    const Part& p = parts[k];
+    const auto v = [&](double u) {
+      return detail::arcRecordV(records.data() + first[k], steps[k], p.r, p.z, u, arc[k], arc[k + 1], total);
+    };
+    const Real L = exactArc[k + 1] - exactArc[k];
+    const Real tolerance = 0x1p-30L * L / exactTotal + 3 * 0x1p-39L + 0x1p-52L;
+    for (int j = 1; j < 16 * int(steps[k]); ++j) {
+      const Real at = Real(j) / (16 * steps[k]);
+      const Real exact = (exactArc[k] + lengthBetween(p, 0, at, 0x1p-60L)) / exactTotal;
+      ASSERT_LE(std::abs(v(double(at)) - exact), tolerance) << "u = " << double(at);
+    }
+    EXPECT_EQ(v(0.0), arc[k] / total);
+    EXPECT_LE(v(1.0), arc[k + 1] / total);
+  }
 }
 
 }  // namespace

@@ -309,6 +309,28 @@ TEST(SplineTest, ALinearSplineIsItsPolyline) {
   EXPECT_EQ(shape.profile().points().size(), 4u);
 }
 
+TEST(SplineTest, BezierKindKeepsItsControlPointsOnce) {
+  // Its points are its control points: bezier() gives the given points, in a copy of the spline
+  // too (what a Shape keeps), and the spline holds them once.
+  const std::vector<Point2> p{{0.5, 0}, {1, 0.25}, {1, 0.75}, {0.5, 1}, {0.25, 1.25}, {0.25, 1.5}, {0, 2}};
+  const Spline spline(SplineKind::bezier, p);
+  const Spline copy = spline;
+  for (const Spline* s : {&spline, &copy}) {
+    ASSERT_EQ(s->bezier().size(), p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      EXPECT_EQ(s->bezier()[i].r, p[i].r) << i;
+      EXPECT_EQ(s->bezier()[i].z, p[i].z) << i;
+    }
+    EXPECT_EQ(s->pieceCount(), 2u);
+    EXPECT_EQ(s->at(1, 1.0).z, 2.0);
+  }
+  EXPECT_EQ(spline.memoryBytes(), p.size() * sizeof(Point2));
+  const Shape shape(spline);
+  ASSERT_NE(shape.spline(), nullptr);
+  EXPECT_EQ(shape.spline()->bezier().size(), p.size());
+  EXPECT_EQ(shape.spline()->bezier().back().z, 2.0);
+}
+
 TEST(SplineTest, ShapesReportTheirParts) {
   const Spline sphere(SplineKind::bezier, testing::bezierSphere(1.0, 4));
   const Shape shape(sphere);

@@ -116,7 +116,6 @@ nlohmann::ordered_json shapeBreakdown(const Shape& shape) {
   parts["profile_points"] = points * sizeof(Point2);
   parts["profile_arc_lengths"] = impl.profile.arcLength().size() * sizeof(double);
   parts["profile_source_indices"] = impl.profile.sourceIndex().identity() ? 0 : points * sizeof(std::size_t);
-  parts["local_points"] = impl.local.capacity() * sizeof(Point2);
   parts["mibit_tree"] = impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
                         impl.mibit.cones.capacity() * sizeof(detail::NodeCone) +
                         impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +

@@ -223,7 +223,7 @@ TEST(RevolveBenchTest, ScaleReportsEveryFigureAndMeshesMatchTheExactSurfaces) {
     const json& parts = exact["shape_bytes"][kind];
     double sum = 0;
     for (const char* part : {"shape_struct", "profile_points", "profile_arc_lengths", "profile_source_indices",
-                             "local_points", "mibit_tree", "wide_tree", "curve_parts", "arc_tables", "spline"})
+                             "mibit_tree", "wide_tree", "curve_parts", "arc_tables", "spline"})
       sum += parts[part].get<double>();
     EXPECT_EQ(sum, parts["total"].get<double>()) << kind;
   }

@@ -248,8 +248,8 @@ class Spline {
   std::span<const Point2> points() const noexcept { return points_; }  // as given (linear: as kept)
   // The curve as cubic Bezier pieces: piece i has control points bezier()[3 i] to bezier()[3 i + 3]
   // (quadratic pieces degree-elevated, linear segments with their inner points at the thirds).
-  std::span<const Point2> bezier() const noexcept { return bezier_; }
-  std::size_t pieceCount() const noexcept { return (bezier_.size() - 1) / 3; }
+  std::span<const Point2> bezier() const noexcept { return kind_ == SplineKind::bezier ? points_ : bezier_; }
+  std::size_t pieceCount() const noexcept { return (bezier().size() - 1) / 3; }
   // Index in points() of the point where piece i starts (for messages and the readers' lines).
   std::size_t pieceStart(std::size_t piece) const noexcept;
   // The point of piece `piece` at parameter u in [0, 1] (de Casteljau).
@@ -262,7 +262,7 @@ class Spline {
  private:
   SplineKind kind_;
   std::vector<Point2> points_;
-  std::vector<Point2> bezier_;
+  std::vector<Point2> bezier_;  // empty for the bezier kind, whose points are its control points
   // A linear spline's pieceStart (the kept points' indices in the input); the other kinds' pieces
   // start at every first, second or third point, which the kind says.
   std::vector<std::size_t> linearPieceStart_;

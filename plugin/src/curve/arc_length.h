@@ -29,14 +29,15 @@ inline double arcLengthBetween(const double r[4], const double z[4], double a, d
   return half * sum;
 }
 
-// v at u from a part's table of v at `steps` equal steps of [0, 1] (arc_table.h): the step's entry
-// plus the arc length from its start to u by one five-point rule, times `scale` (v per unit of
-// length). The table is made fine enough for that rule: within 2^-30 of the part's length.
-inline double arcLengthFrom(const double* table, std::uint32_t steps, const double r[4], const double z[4], double u,
-                            double scale) noexcept {
+// The arc length from u = 0 to u from a part's table of it at `steps` equal steps of [0, 1]
+// (arc_table.h; `inner`: its entries at u = k / steps, k = 1 .. steps - 1, the one at 0 being 0):
+// the step's entry plus the arc length from its start to u by one five-point rule. The table is
+// made fine enough for that rule: within 2^-30 of the part's length.
+inline double arcLengthFrom(const double* inner, std::uint32_t steps, const double r[4], const double z[4],
+                            double u) noexcept {
   const double x = std::clamp(u, 0.0, 1.0) * steps;
   const std::uint32_t k = std::min(std::uint32_t(x), steps - 1);
-  return table[k] + scale * arcLengthBetween(r, z, double(k) / steps, std::clamp(u, 0.0, 1.0));
+  return (k == 0 ? 0.0 : inner[k - 1]) + arcLengthBetween(r, z, double(k) / steps, std::clamp(u, 0.0, 1.0));
 }
 
 }  // namespace REVOLVE_ISA

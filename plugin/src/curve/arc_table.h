@@ -13,11 +13,11 @@ struct ArcTable {
 };
 
 // Arc lengths by adaptive Gauss-Legendre quadrature (halving until two levels agree within 2^-40
-// of the part's length); steps doubled from 1 (up to 1024) until one five-point Gauss-Legendre
-// rule from a step's start (arcLengthBetween, what a hit computes: arc_length.h's arcLengthFrom)
-// is within 2^-31 of the part's length of the arc length at every eighth of the step: 2^-30 is
-// promised anywhere in it, the other half room for the points between. A smooth part needs one to
-// four steps: a few doubles a part rather than a dense table.
+// of the part's length: each step's eighths, checked by its quarters); steps doubled from 1 (up to
+// 1024) until one five-point Gauss-Legendre rule from a step's start (arcLengthBetween, what a hit
+// computes: arc_length.h's arcLengthFrom) is within 2^-31 of the part's length of the arc length at
+// every eighth of the step: 2^-30 is promised anywhere in it, the other half room for the points
+// between. A smooth part needs one to four steps: a few doubles a part rather than a dense table.
 ArcTable arcTableOf(const double r[4], const double z[4]);
 
 }  // namespace revolve::detail

@@ -137,8 +137,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     case SplineKind::quadratic:
       bezier_ = detail::bezierOfQuadratic(points_);
       break;
-    case SplineKind::bezier:
-      bezier_.assign(points_.begin(), points_.end());
+    case SplineKind::bezier:  // its points are its control points: bezier() gives them, no copy kept
       break;
     case SplineKind::catmullRom:
       bezier_ = detail::bezierOfCatmullRom(points_);
@@ -159,7 +158,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
   // coordinate range, long enough, and never below r = 0.
   const double shortest = extent * Profile::kMinSegmentFraction;
   for (std::size_t i = 0; i < pieces; ++i) {
-    const Point2* c = &bezier_[3 * i];
+    const Point2* c = &bezier()[3 * i];
     double reach = 0.0;  // how far the control hull reaches from the first point
     for (int k = 0; k < 4; ++k) {
       if (!(std::abs(c[k].r) <= Profile::kMaxCoordinate && std::abs(c[k].z) <= Profile::kMaxCoordinate)) {
@@ -204,7 +203,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
     }
   }
 
-  const std::vector<detail::MonotonePart> parts = detail::monotoneParts(bezier_, extent);
+  const std::vector<detail::MonotonePart> parts = detail::monotoneParts(bezier(), extent);
   if (parts.size() > 0xfffffff0u) {
     throw ProfileError(ProfileError::Rule::tooManyPoints, points_.size() - 1,
                        "spline has too many monotone parts for 32-bit tree indices");
@@ -219,7 +218,7 @@ Spline::Spline(SplineKind kind, std::span<const Point2> input) : kind_(kind) {
                            "profile must not cross or touch itself");
   }
 
-  const Point2 first = bezier_.front(), last = bezier_.back();
+  const Point2 first = bezier().front(), last = bezier().back();
   closed_ = (first.r == last.r && first.z == last.z) || (first.r == 0.0 && last.r == 0.0);
 }
 
@@ -238,7 +237,7 @@ std::size_t Spline::memoryBytes() const noexcept {
 }
 
 Point2 Spline::at(std::size_t piece, double u) const noexcept {
-  const Point2* c = &bezier_[3 * piece];
+  const Point2* c = &bezier()[3 * piece];
   const double r[4] = {c[0].r, c[1].r, c[2].r, c[3].r}, z[4] = {c[0].z, c[1].z, c[2].z, c[3].z};
   return {detail::cubicAt(r, u), detail::cubicAt(z, u)};
 }

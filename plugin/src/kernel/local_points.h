@@ -1,8 +1,7 @@
 // A shape's profile points in its local frame (z_local = z - zCentre), read through rather than
-// stored: a polyline shape shifts its profile's own points on each read, which gives the very double
-// a stored copy held (one rounded subtraction either way), and saves a second copy of every point.
-// A spline shape's knots are kept in the local frame already (their global copy is the rounded
-// sum), so it reads them with no shift: z - 0 is z exactly, -0 included.
+// stored: a shape shifts its profile's own points on each read, which gives the very double a stored
+// copy held (one rounded subtraction either way), and saves a second copy of every point. A spline
+// shape's profile holds its parts' ends as the curve has them, so their shift is each part's local end.
 #pragma once
 
 #include "util/isa.h"

@@ -1,5 +1,5 @@
 // Building a Shape: the local frame, the bounding sphere and box, and the search structures.
-#include "curve/arc_record.h"
+#include "curve/arc_length.h"
 #include "curve/arc_table.h"
 #include "curve/monotone_parts.h"
 #include "shape/shape_impl.h"
@@ -131,12 +131,16 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
   // rounding bounds, scaled by its radius, hold for the control values the leaves compute with.
   double radius = 0.0;
   std::vector<detail::CurvePart> local;
-  std::vector<Point2> knots{{parts[0].c[0].r, parts[0].c[0].z - zCentre}}, inner;
-  std::vector<double> arc{0.0}, lengths;
-  std::vector<detail::ArcTable> tables;  // the curved parts' (a straight part's v is its chord's)
+  // The knots as the parts have them (global): the profile's points, whose shift as read
+  // (localPointsOf: z - zCentre) is the very double each part's local end holds.
+  std::vector<Point2> knots{parts[0].c[0]}, inner;
+  std::vector<double> arc{0.0};
   auto data = std::make_unique<detail::SplineData>(detail::SplineData{std::move(curve), {}, {}});
+  std::vector<double>& records = data->arcRecords;
   local.reserve(parts.size());
-  lengths.reserve(parts.size());
+  knots.reserve(parts.size() + 1);
+  inner.reserve(2 * parts.size());
+  arc.reserve(parts.size() + 1);
   for (const detail::MonotonePart& part : parts) {
     detail::CurvePart c{};
     for (int i = 0; i < 4; ++i) {
@@ -146,49 +150,39 @@ Shape::Shape(Spline curve, const BuildOptions& options) {
     }
     c.straight = isStraight(part, extent);
     if (data->firstPartOfPiece.size() == part.piece) data->firstPartOfPiece.push_back(std::uint32_t(local.size()));
-    // Its length, and for a curved part its table of arc length (normalised to v below).
-    detail::ArcTable table = detail::arcTableOf(c.r, c.z);
-    lengths.push_back(table.length);
-    if (!c.straight) tables.push_back(std::move(table));
-    knots.push_back({c.r[3], c.z[3]});
+    // Its length; a curved part's table of arc length without its ends, its record of v
+    // (curve/arc_record.h). A straight part's length is one five-point rule: its speed is its
+    // chord's length times a quadratic (to its controls' 2^-50 of the extent off the chord), which
+    // the rule integrates exactly up to rounding.
+    if (c.straight) {
+      arc.push_back(arc.back() + detail::arcLengthBetween(c.r, c.z, 0.0, 1.0));
+    } else {
+      const detail::ArcTable table = detail::arcTableOf(c.r, c.z);
+      c.arcRecord = std::uint32_t(records.size());
+      c.arcSteps = std::uint16_t(table.steps);
+      records.insert(records.end(), table.cumulative.begin() + 1, table.cumulative.end() - 1);
+      arc.push_back(arc.back() + table.length);
+    }
+    knots.push_back(part.c[3]);
     inner.push_back({c.r[1], c.z[1]});
     inner.push_back({c.r[2], c.z[2]});
-    arc.push_back(arc.back() + lengths.back());
     local.push_back(c);
   }
   data->firstPartOfPiece.push_back(std::uint32_t(local.size()));
-  const double total = arc.back();
-  std::vector<double> v0(local.size()), dv(local.size());
-  std::size_t recordSize = 0;
-  for (const detail::ArcTable& table : tables) recordSize += detail::arcRecordSize(table.steps);
-  std::vector<double>& records = data->arcRecords;
-  records.reserve(recordSize);
-  for (std::size_t k = 0, curved = 0; k < local.size(); ++k) {
-    detail::CurvePart& c = local[k];
-    v0[k] = arc[k] / total;
-    dv[k] = lengths[k] / total;
-    if (c.straight) continue;
-    const detail::ArcTable& table = tables[curved++];
-    c.arcRecord = std::uint32_t(records.size());
-    c.arcSteps = std::uint16_t(table.steps);
-    records.push_back(dv[k] / lengths[k]);
-    records.push_back(v0[k] + dv[k]);
-    for (std::uint32_t i = 0; i < table.steps; ++i) records.push_back(v0[k] + table.cumulative[i] / total);
-  }
   data->firstPartOfPiece.shrink_to_fit();  // grown by insertion
+  records.shrink_to_fit();
 
-  std::vector<Point2> global;
-  global.reserve(knots.size());
-  for (const Point2& p : knots) global.push_back({p.r, p.z + zCentre});
   impl_ = std::make_unique<detail::ShapeImpl>(
-      Profile(Profile::Unchecked{}, std::move(global), arc, data->spline.closed()), options);
+      Profile(Profile::Unchecked{}, std::move(knots), std::move(arc), data->spline.closed()), options);
   detail::ShapeImpl& impl = *impl_;
   impl.parts = std::move(local);
   impl.curve = std::move(data);
-  impl.local = std::move(knots);
-  impl.local.shrink_to_fit();
   impl.frame = detail::makeShapeFrame(zCentre, radius * (1.0 + 0x1p-20));
-  buildSearch(impl, impl.local, options, inner);
+  // The builders' copy of the knots in the local frame, the doubles localPointsOf gives.
+  std::vector<Point2> localKnots;
+  localKnots.reserve(impl.parts.size() + 1);
+  for (const Point2& p : impl.profile.points()) localKnots.push_back({p.r, p.z - zCentre});
+  buildSearch(impl, localKnots, options, inner);
   impl.bounds = paddedBounds(rMax, zMin, zMax);
 }
 
@@ -233,8 +227,7 @@ std::size_t Shape::treeNodeCount() const noexcept {
 
 std::size_t Shape::memoryBytes() const noexcept {
   const detail::ShapeImpl& impl = *impl_;
-  return sizeof(detail::ShapeImpl) + impl.local.capacity() * sizeof(Point2) +
-         impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
+  return sizeof(detail::ShapeImpl) + impl.mibit.nodes.capacity() * sizeof(detail::MibitNode) +
          impl.mibit.cones.capacity() * sizeof(detail::NodeCone) +
          impl.mibit.intervals.capacity() * sizeof(detail::MonotoneInterval) +
          impl.mibit.implicitShells.capacity() * sizeof(detail::ImplicitShell) +

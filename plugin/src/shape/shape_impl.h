@@ -48,18 +48,16 @@ struct ShapeImpl {
   bool curved() const noexcept { return !parts.empty(); }
   BuildOptions options;
   ShapeFrame frame;
-  std::vector<Point2> local;  // a spline shape's knots in the local frame; a polyline's: localPointsOf
-  MibitTree mibit;            // always built: it also serves closest-point queries and in-plane rays
-  WideTree wide;              // the SIMD layout, for the default options (BuildOptions::wideNodes)
-  StripTree strips;           // built for Method::kajiya only
+  MibitTree mibit;   // always built: it also serves closest-point queries and in-plane rays
+  WideTree wide;     // the SIMD layout, for the default options (BuildOptions::wideNodes)
+  StripTree strips;  // built for Method::kajiya only
   Bounds bounds;
 };
 
 inline namespace REVOLVE_ISA {
-// The shape's points in its local frame: a polyline's profile points shifted as they are read (the
-// same doubles a stored copy would hold), a spline's knots as kept.
+// The shape's points in its local frame: its profile points (a spline's knots) shifted as they are
+// read, the same doubles a stored copy would hold (a spline's parts hold them as their ends).
 inline LocalPoints localPointsOf(const ShapeImpl& shape) noexcept {
-  if (shape.curved()) return {shape.local.data(), shape.local.size(), 0.0};
   const std::span<const Point2> points = shape.profile.points();
   return {points.data(), points.size(), shape.frame.zCentre};
 }

@@ -37,7 +37,8 @@ template <bool kCurve>
 inline SegmentFrame segmentFrameOf(const detail::ShapeImpl& shape, std::uint32_t k) noexcept {
   double er, ez;
   if constexpr (kCurve) {
-    const Point2 a = shape.local[k], b = shape.local[k + 1];
+    const LocalPoints local = localPointsOf(shape);
+    const Point2 a = local[k], b = local[k + 1];
     er = b.r - a.r, ez = b.z - a.z;
   } else {
     const Point2* p = shape.profile.points().data();
@@ -91,7 +92,9 @@ inline Hit curveSurfaceHit(const detail::ShapeImpl& shape, const MeridianRay& ra
   hit.segment = k;
   if constexpr ((kAttributes & kUvAttribute) != 0) {
     hit.u = azimuthFraction(px, py);
-    hit.v = float(arcRecordV(&shape.curve->arcRecords[part.arcRecord], part.arcSteps, part.r, part.z, u));
+    const double* arc = shape.profile.arcLength().data();
+    hit.v = float(arcRecordV(shape.curve->arcRecords.data() + part.arcRecord, part.arcSteps, part.r, part.z, u, arc[k],
+                             arc[k + 1], arc[shape.profile.segmentCount()]));
   }
   if constexpr ((kAttributes & kNormalAttribute) == 0) return hit;
   const auto [rho, cosPhi, sinPhi] = azimuthOf(px, py);
