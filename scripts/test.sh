@@ -19,13 +19,16 @@ scripts/check-format.sh
 echo "== Release build and tests (the Python package's pytest suite among them)"
 # Tests and benchmark on explicitly: build/ may have been configured by scripts/main.sh without them.
 # The Python package too, so that a missing dependency fails here instead of skipping its tests.
+# The test executables' own files are compiled at -O1 with GoogleTest precompiled
+# (cmake/TestCode.cmake): 283 CPU-seconds instead of 406 for them under GCC 12 (measured with -j2).
 scripts/build.sh -- -DREVOLVE_BUILD_TESTS=ON -DREVOLVE_BUILD_BENCH=ON -DREVOLVE_BUILD_TOOLS=ON -DREVOLVE_BUILD_PYTHON=ON
 ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 echo "== Release build and tests: ${SECONDS} s so far"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 # clang, with line tables only: the same build under GCC with -O2 -g took 525 s of CI's time, this
-# one 190 s (measured on 2 cores); sanitizer reports still name file and line.
+# one 190 s (measured on 2 cores); sanitizer reports still name file and line. Its test files get
+# -O1 and precompiled GoogleTest too: 30% less compile time (clang 14, five test files sampled).
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" -DREVOLVE_SANITIZE=ON -DREVOLVE_BUILD_BENCH=OFF \
   -DREVOLVE_BUILD_PYTHON=ON
