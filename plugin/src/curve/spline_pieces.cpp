@@ -59,10 +59,19 @@ std::vector<Point2> solveCyclic(const std::vector<double>& sub, const std::vecto
   return out;
 }
 
+// A piece list's storage for `pieces` cubic pieces, its first point in: 3 points a piece and the
+// first, reserved exactly, since a Spline keeps the list as it is (no growth slack to carry).
+std::vector<Point2> startPieces(std::size_t pieces, Point2 first) {
+  std::vector<Point2> out;
+  out.reserve(3 * pieces + 1);
+  out.push_back(first);
+  return out;
+}
+
 }  // namespace
 
 std::vector<Point2> bezierOfPolyline(std::span<const Point2> points) {
-  std::vector<Point2> out{points[0]};
+  std::vector<Point2> out = startPieces(points.size() - 1, points[0]);
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const Point2 a = points[i], b = points[i + 1];
     out.push_back(a + (1.0 / 3.0) * (b - a));
@@ -73,7 +82,7 @@ std::vector<Point2> bezierOfPolyline(std::span<const Point2> points) {
 }
 
 std::vector<Point2> bezierOfQuadratic(std::span<const Point2> points) {
-  std::vector<Point2> out{points[0]};
+  std::vector<Point2> out = startPieces((points.size() - 1) / 2, points[0]);
   for (std::size_t i = 0; i + 2 < points.size(); i += 2) {
     const Point2 a = points[i], m = points[i + 1], b = points[i + 2];
     out.push_back(a + (2.0 / 3.0) * (m - a));
@@ -106,7 +115,7 @@ std::vector<Point2> bezierOfCatmullRom(std::span<const Point2> p) {
     tangents[0] = (1.0 / d[0]) * (p[1] - p[0]);
     tangents[m] = (1.0 / d[m - 1]) * (p[m] - p[m - 1]);
   }
-  std::vector<Point2> out{p[0]};
+  std::vector<Point2> out = startPieces(m, p[0]);
   for (std::size_t i = 0; i < m; ++i) appendHermite(out, p[i], tangents[i], p[i + 1], tangents[i + 1], d[i]);
   return out;
 }
@@ -153,7 +162,7 @@ std::vector<Point2> bezierOfNatural(std::span<const Point2> p) {
     }
     derivative.push_back(derivative[0]);
   }
-  std::vector<Point2> out{p[0]};
+  std::vector<Point2> out = startPieces(m, p[0]);
   for (std::size_t i = 0; i < m; ++i) appendHermite(out, p[i], derivative[i], p[i + 1], derivative[i + 1], h[i]);
   return out;
 }
