@@ -38,9 +38,10 @@ if [[ $benchmarks == yes ]]; then
   build/bin/revolve-bench pov --scene scenes/vessels.json --json bench/results/pov-vessels.json \
     --figure docs/pov_vessels.png | tee bench/results/pov-vessels.txt
   build/bin/revolve-bench pov-scaling --json bench/results/pov-scaling.json | tee bench/results/pov-scaling.txt
-  # Scenes of many distinct objects (docs/performance.md): one process a run, about 15 minutes.
+  # Scenes of many distinct objects (docs/performance.md): one process a run, about 15 minutes; the
+  # million objects built by the library alone need about 10 GB.
   bench/python/scale_ladder.py build/bin/revolve-bench bench/results/scale/scale.json \
-    --counts 100,1000,10000,100000,300000 --runs 3 --mesh-limit-gb 8
+    --counts 100,1000,10000,100000,1000000 --runs 3 --mesh-limit-gb 8 --scene-max 100000
 fi
 
 # The patio as scripts/main.sh renders it (README, "revolve-render").

@@ -34,14 +34,14 @@ def main():
     triangles_per_mesh = None
     for count in counts:
         for geometry, build in (("revolve", "library"), ("revolve", "scene"), ("mesh", "scene")):
-            if build == "scene" and count > args.scene_max:
-                continue
             if geometry == "mesh" and triangles_per_mesh is not None:
                 need = triangles_per_mesh * count * 128 / 1e9
                 if need > args.mesh_limit_gb:
                     document["not_fitting"].append({"objects": count, "geometry": geometry, "estimated_gb": need})
                     print(f"mesh, {count} objects: about {need:.0f} GB of triangles, not run", flush=True)
                     continue
+            if build == "scene" and count > args.scene_max:
+                continue
             for run in range(args.runs):
                 with tempfile.TemporaryDirectory() as folder:
                     path = os.path.join(folder, "run.json")
