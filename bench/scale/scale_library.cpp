@@ -59,11 +59,6 @@ LibraryScene::LibraryScene(const ScaleFamily& family, std::size_t count)
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-LibraryScene::~LibraryScene() {
-  scene_.reset();  // before the geometries its tree points into
-  geometries_.clear();
-}
-
 bool LibraryScene::hits(const Ray& ray) const noexcept {
   RTCRayHit rayHit = embree::newRayHit(ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y,
                                        ray.direction.z, ray.tnear, ray.tfar);

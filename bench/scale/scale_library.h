@@ -23,7 +23,6 @@ class LibraryScene {
  public:
   // Objects 0 to count - 1 of `family`, placed on its grid for `count` objects, committed.
   LibraryScene(const ScaleFamily& family, std::size_t count);
-  ~LibraryScene();
   LibraryScene(const LibraryScene&) = delete;
   LibraryScene& operator=(const LibraryScene&) = delete;
 
@@ -41,11 +40,13 @@ class LibraryScene {
   struct MemoryCounter {
     std::atomic<std::int64_t> current{0}, peak{0};
   };
-  std::unique_ptr<MemoryCounter> memory_;  // outlives the device, which reports to it
+  // Destroyed in reverse: the scene (whose tree points into the geometries) first, then the
+  // geometries, the shapes they trace, the device, and the counter the device reports to.
+  std::unique_ptr<MemoryCounter> memory_;
   app::Device device_;
-  app::Scene scene_;
   std::vector<std::optional<Shape>> shapes_;
   std::vector<std::optional<revolve::Geometry>> geometries_;
+  app::Scene scene_;
   double buildSeconds_ = 0;
 };
 

@@ -94,15 +94,7 @@ std::vector<std::string> degenerateObjectWarnings(const io::SceneDescription& sc
                          " from the origin: Embree cannot place it, and its hits are lost to rounding");
       continue;
     }
-    // Closed as Profile::closed says: its ends meet, or both lie on the axis (a spline's curve
-    // starts and ends at its first and last Bezier control points).
-    bool closed = false;
-    if (source.spline) {
-      const Point2 a = source.spline->bezier().front(), b = source.spline->bezier().back();
-      closed = (a.r == b.r && a.z == b.z) || (a.r == 0 && b.r == 0);
-    } else {
-      closed = source.polyline().closed();
-    }
+    const bool closed = source.spline ? source.spline->closed() : source.polyline().closed();
     if (camera && closed) {
       // The camera in the object's frame: L^-1 (from - T), L^-1 = S^-1 R^T.
       const app::Matrix3d rotation = app::rotationOf(object.transform);

@@ -103,7 +103,8 @@ class WideTree {
 
   // Not built (the shape's options or scale call for the binary tree). A scanned profile
   // (flatSegments > 0) has its segments' and runs' records and no nodes, leaves or children.
-  bool empty() const noexcept { return segmentRecords_ == 0; }
+  // (A moved-from tree, whose storage went with the move, is empty too.)
+  bool empty() const noexcept { return segmentRecords_ == 0 || storage_ == nullptr; }
   std::size_t memoryBytes() const noexcept {
     return bytesOf(segmentRecords_, runRecords_, childRecords_, nodeCount_, leafCount_);
   }
