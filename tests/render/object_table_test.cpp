@@ -212,9 +212,9 @@ TEST(ObjectTableTest, TheFirstFailingObjectIsReported) {
   EXPECT_THAT(errorOf(profiles, objects), HasSubstr("p.csv:4: "));
 }
 
-// Tables longer than a build batch (4,096 objects): 8,197 objects cross two batch boundaries and
-// read back in order, each as the formula that wrote it says; a bad object in the second batch is
-// named by its line, and of two bad objects in different batches the earlier one.
+// Tables longer than a build batch (4,096 objects: io/object_table.cpp's kBatchObjects): 8,197 objects cross two batch
+// boundaries and read back in order, each as the formula that wrote it says; a bad object in the second batch is named
+// by its line, and of two bad objects in different batches the earlier one.
 TEST(ObjectTableTest, TablesCrossingBuildBatchesReadBackInOrder) {
   constexpr std::size_t kCount = 2 * 4096 + 5;
   const auto radius = [](std::size_t i) { return 0.125 + double(i) * 0x1p-20; };  // exact in decimal text
