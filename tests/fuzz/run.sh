@@ -18,9 +18,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 build=$(realpath -m "${2:-$root/build-fuzz}")
 
+# Line tables only, as the sanitizer build of scripts/test.sh: reports still name file and line, and
+# a library file compiled in 7.4 CPU seconds instead of 9.7 with full debug information.
 cmake -S "$root" -B "$build" -G Ninja \
   -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_TOOLS=ON
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" -DREVOLVE_FUZZ=ON -DREVOLVE_BUILD_TESTS=OFF -DREVOLVE_BUILD_BENCH=OFF -DREVOLVE_BUILD_TOOLS=ON
 cmake --build "$build" --target fuzz_profile_csv fuzz_rays_csv fuzz_profile_points fuzz_spline_points fuzz_scene_json fuzz_sensor_json \
   fuzz_poses_csv
 # Regressions first: every seed and every saved finding, once each.
