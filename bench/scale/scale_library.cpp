@@ -14,17 +14,8 @@
 namespace revolve::bench {
 
 LibraryScene::LibraryScene(const ScaleFamily& family, std::size_t count)
-    : memory_(std::make_unique<MemoryCounter>()), device_(app::newDevice()) {
-  rtcSetDeviceMemoryMonitorFunction(
-      device_.get(),
-      [](void* user, ssize_t bytes, bool) {
-        auto* counter = static_cast<MemoryCounter*>(user);
-        const std::int64_t now = counter->current.fetch_add(bytes) + bytes;
-        std::int64_t peak = counter->peak.load();
-        while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {}
-        return true;
-      },
-      memory_.get());
+    : memory_(std::make_unique<app::EmbreeMemory>()), device_(app::newDevice()) {
+  app::monitorMemory(device_.get(), memory_.get());
   scene_ = app::newScene(device_.get());
   const auto start = std::chrono::steady_clock::now();
   shapes_.resize(count);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "embree/embree_handles.h"
+#include "embree/memory_monitor.h"
 #include "scale/scale_family.h"
 
 #include <revolve/revolve.h>
@@ -37,12 +38,9 @@ class LibraryScene {
   std::int64_t embreePeakBytes() const noexcept { return memory_->peak.load(); }
 
  private:
-  struct MemoryCounter {
-    std::atomic<std::int64_t> current{0}, peak{0};
-  };
   // Destroyed in reverse: the scene (whose tree points into the geometries) first, then the
   // geometries, the shapes they trace, the device, and the counter the device reports to.
-  std::unique_ptr<MemoryCounter> memory_;
+  std::unique_ptr<app::EmbreeMemory> memory_;
   app::Device device_;
   std::vector<std::optional<Shape>> shapes_;
   std::vector<std::optional<revolve::Geometry>> geometries_;

@@ -185,20 +185,11 @@ struct EmbreeScene::Instance {
 };
 
 EmbreeScene::EmbreeScene(const Layout& layout, bool unitDirections)
-    : memory_(std::make_unique<MemoryCounter>()),
+    : memory_(std::make_unique<app::EmbreeMemory>()),
       device_(app::newDevice()),
       layout_(layout),
       unitDirections_(unitDirections) {
-  rtcSetDeviceMemoryMonitorFunction(
-      device_.get(),
-      [](void* user, ssize_t bytes, bool) {
-        auto* counter = static_cast<MemoryCounter*>(user);
-        const std::int64_t now = counter->current.fetch_add(bytes) + bytes;
-        std::int64_t peak = counter->peak.load();
-        while (now > peak && !counter->peak.compare_exchange_weak(peak, now)) {}
-        return true;
-      },
-      memory_.get());
+  app::monitorMemory(device_.get(), memory_.get());
   top_ = app::newScene(device_.get());
   if (layout.robust) rtcSetSceneFlags(top_.get(), RTC_SCENE_FLAG_ROBUST);
 }

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "embree/embree_handles.h"
+#include "embree/memory_monitor.h"
 #include "geometry/placement.h"
 #include "io/scene_file.h"
 
@@ -173,9 +174,6 @@ class EmbreeScene {
     bool mesh = false;
     std::uint32_t index = 0;  // into instances_ or meshes_
   };
-  struct MemoryCounter {
-    std::atomic<std::int64_t> current{0}, peak{0};
-  };
 
   EmbreeScene(const Layout& layout, bool unitDirections);
   // An exact surface's Embree geometry for `instance`: placed by its placement, unplaced for the identity.
@@ -199,7 +197,7 @@ class EmbreeScene {
   // (geomID invalid); lengths[i] is what the lane's t is to be divided by (unit directions).
   void tracePacket(std::span<const Ray> rays, RTCRayHit8& packet, float (&lengths)[kPacketRays]) const noexcept;
 
-  std::unique_ptr<MemoryCounter> memory_;  // outlives the device, which reports to it
+  std::unique_ptr<app::EmbreeMemory> memory_;  // outlives the device, which reports to it
   std::unique_ptr<std::atomic<std::uint64_t>> refused_ = std::make_unique<std::atomic<std::uint64_t>>(0);
   app::Device device_;
   Layout layout_;
